@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_BASE_EXCEPTIONS_H
+#define POROFRAC_BASE_EXCEPTIONS_H
+
+#include <stdexcept>
+#include <string>
+
+namespace porofrac
+{
+  /**
+   * An error in the user's input: a deck parameter with an impossible value, malformed geometry,
+   * a missing file. It names the parameter (as "Section/Subsection/Name") and the reason; main()
+   * adds the deck name and exits with status 1, so that bad input never ends in a crash.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    InputError(const std::string &parameter, const std::string &reason)
+      : std::runtime_error("parameter '" + parameter + "': " + reason)
+      , parameter(parameter)
+      , reason(reason)
+    {}
+
+    const std::string parameter;
+    const std::string reason;
+  };
+
+  /**
+   * A nonlinear or linear solve that failed after every remedy (time-step cuts, globalization).
+   * main() reports it with the last good state already written.
+   */
+  class SolverFailure : public std::runtime_error
+  {
+  public:
+    explicit SolverFailure(const std::string &what)
+      : std::runtime_error(what)
+    {}
+  };
+
+  /// Throws InputError(parameter, reason) unless @p condition holds.
+  inline void
+  check_input(const bool condition, const std::string &parameter, const std::string &reason)
+  {
+    if (!condition)
+      throw InputError(parameter, reason);
+  }
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_IO_RUN_CONTEXT_H
+#define POROFRAC_IO_RUN_CONTEXT_H
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <porofrac/io/json.h>
+
+#include <ostream>
+#include <string>
+
+namespace porofrac
+{
+  namespace io
+  {
+    using namespace dealii;
+
+    /**
+     * What a scene needs from the application around it: where to write, where to talk, where to
+     * time, and the summary.json being built.
+     *
+     * - `report` always prints: results that tests compare (fixed formats: integers, or
+     *   std::scientific with 3-4 digits; never timings, paths or Krylov iteration counts).
+     * - `progress` prints at verbosity normal or verbose: per-step and per-iteration progress.
+     * - `verbose` prints at verbosity verbose only.
+     */
+    struct RunContext
+    {
+      std::string         deck_name;
+      std::string         output_directory;
+      std::ostream       &report;
+      ConditionalOStream &progress;
+      ConditionalOStream &verbose;
+      TimerOutput        &timer;
+      Json               &summary;
+      /// "vtu", "vtk" or "none" (Output/Format).
+      std::string output_format;
+
+      /// output_directory + "/" + @p file.
+      std::string
+      path(const std::string &file) const
+      {
+        return output_directory + "/" + file;
+      }
+    };
+  } // namespace io
+} // namespace porofrac
+
+#endif
