@@ -37,6 +37,14 @@ namespace porofrac
     {}
   };
 
+/// Throws the InputError @p error unless @p condition holds (the message is built lazily).
+#define POROFRAC_CHECK_INPUT(condition, error) \
+  do                                           \
+    {                                          \
+      if (!(condition))                        \
+        throw error;                           \
+  } while (false)
+
   /// Throws InputError(parameter, reason) unless @p condition holds.
   inline void
   check_input(const bool condition, const std::string &parameter, const std::string &reason)

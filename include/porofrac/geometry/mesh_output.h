@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_GEOMETRY_MESH_OUTPUT_H
+#define POROFRAC_GEOMETRY_MESH_OUTPUT_H
+
+#include <porofrac/geometry/cut_mesh.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace porofrac
+{
+  namespace geometry
+  {
+    /// Named per-fracture-face values (one per entry of CutMesh::fracture_faces).
+    using FractureFields = std::vector<std::pair<std::string, std::vector<double>>>;
+
+    /**
+     * Writes the fracture faces as line (2D) or triangle (3D) cells to @p filename (format "vtu":
+     * XML VTK, "vtk": legacy VTK, both ASCII), with fracture_id, face_id, abscissa and
+     * distance_to_tip, plus @p fields.
+     */
+    template <int dim>
+    void
+    write_fracture_cells(const CutMesh<dim>  &mesh,
+                         const std::string   &filename,
+                         const std::string   &format,
+                         const FractureFields &fields = {});
+
+    /// Writes the cut mesh (material id and circumcentre-inside flag per cell) to
+    /// @p basename.vtu/.vtk and its fracture faces to @p basename_fractures.vtu/.vtk.
+    template <int dim>
+    void
+    write_mesh(const CutMesh<dim> &mesh, const std::string &basename, const std::string &format);
+  } // namespace geometry
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_GEOMETRY_PARAMETERS_H
+#define POROFRAC_GEOMETRY_PARAMETERS_H
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace porofrac
+{
+  namespace geometry
+  {
+    using namespace dealii;
+
+    /// The deck's "Geometry" subsection: domain, fractures, mesh sizes, refinement.
+    struct GeometryParameters
+    {
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /// Reads the subsection; @p deck_directory resolves relative mesh-file paths.
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &deck_directory);
+
+      std::string domain;          ///< box | polygon | mesh file
+      std::string box;             ///< "(x0, y0) (x1, y1)"
+      std::string polygon;         ///< "(x, y) (x, y) ..." counter-clockwise
+      std::string polygon_ids;     ///< one boundary id per polygon edge, or empty
+      std::string fractures;       ///< "id: (x, y) (x, y) ...; id: ..."
+      std::string mesh_file;       ///< .geo or .msh (domain = mesh file), resolved path
+      double      mesh_size;           ///< far from fractures (m)
+      double      fracture_mesh_size;  ///< along fractures (m)
+      double      transition_distance; ///< distance over which the size grows (m)
+      std::string size_expression;     ///< optional gmsh MathEval size field in x, y, z
+      std::string refinement_regions;  ///< "(x0, y0) (x1, y1): h; ..."
+      unsigned int global_refinements;
+      std::string  algorithm; ///< delaunay | frontal-delaunay
+    };
+  } // namespace geometry
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/app/mesh_report.h>
+#include <porofrac/base/config.h>
+#include <porofrac/geometry/mesh_quality.h>
+
+#include <iomanip>
+
+namespace porofrac
+{
+  namespace app
+  {
+    template <int dim>
+    void
+    report_mesh(const geometry::CutMesh<dim> &mesh, io::RunContext &context)
+    {
+      const geometry::MeshQuality q   = geometry::assess_mesh(mesh);
+      std::ostream               &out = context.report;
+      const auto                  flags = out.flags();
+      const auto                  precision = out.precision();
+      out << std::scientific << std::setprecision(4);
+      out << "Mesh:\n"
+          << "  cells: " << q.n_cells << "\n"
+          << "  vertices: " << q.n_vertices << " (" << mesh.n_uncut_vertices << " before cutting)\n"
+          << "  fracture faces: " << q.n_fracture_faces << "\n";
+      io::Json fractures = io::Json::array();
+      for (const unsigned int id : mesh.fracture_ids)
+        {
+          const unsigned int n = mesh.faces_of_fracture.at(id).size();
+          out << "  fracture " << id << ": " << n << " faces, measure " << mesh.fracture_measure(id)
+              << "\n";
+          io::Json f = io::Json::object();
+          f["id"]      = id;
+          f["faces"]   = n;
+          f["measure"] = mesh.fracture_measure(id);
+          fractures.push_back(f);
+        }
+      unsigned int n_tips = 0, n_intersections = 0, n_corners = 0, n_on_boundary = 0;
+      for (const auto &node : mesh.fracture_nodes)
+        {
+          n_tips += node.type == geometry::NodeType::tip;
+          n_intersections += node.type == geometry::NodeType::intersection;
+          n_corners += node.type == geometry::NodeType::corner;
+          n_on_boundary += node.type == geometry::NodeType::boundary;
+        }
+      out << "  fracture nodes: " << n_tips << " tips, " << n_corners << " corners, "
+          << n_intersections << " intersections, " << n_on_boundary << " on the boundary\n"
+          << std::fixed << std::setprecision(2)
+          << "  angles (degrees): min " << q.min_angle_degrees << ", max " << q.max_angle_degrees
+          << "\n"
+          << "  TPFA connections: " << q.n_connections << ", non-orthogonal " << q.n_non_orthogonal
+          << ", non-positive distance " << q.n_non_positive_distance << "\n"
+          << "  circumcentres outside their cell: " << q.n_centres_outside
+          << ", boundary faces with non-positive distance: "
+          << q.n_boundary_non_positive_distance << "\n";
+      out.flags(flags);
+      out.precision(precision);
+
+      io::Json &m                   = context.summary["mesh"];
+      m["n_cells"]                  = q.n_cells;
+      m["n_vertices"]               = q.n_vertices;
+      m["n_vertices_before_cut"]    = mesh.n_uncut_vertices;
+      m["n_fracture_faces"]         = q.n_fracture_faces;
+      m["fractures"]                = fractures;
+      m["n_tips"]                   = n_tips;
+      m["n_corners"]                = n_corners;
+      m["n_intersections"]          = n_intersections;
+      m["n_fracture_nodes_on_boundary"] = n_on_boundary;
+      m["min_angle_degrees"]        = q.min_angle_degrees;
+      m["max_angle_degrees"]        = q.max_angle_degrees;
+      io::Json &a                   = m["tpfa_admissibility"];
+      a["n_connections"]            = q.n_connections;
+      a["n_non_orthogonal"]         = q.n_non_orthogonal;
+      a["n_non_positive_distance"]  = q.n_non_positive_distance;
+      a["n_inadmissible"]           = q.n_inadmissible();
+      a["n_circumcentres_outside_cell"] = q.n_centres_outside;
+      a["n_boundary_faces_non_positive_distance"] = q.n_boundary_non_positive_distance;
+    }
+
+
+
+    template void
+    report_mesh<2>(const geometry::CutMesh<2> &, io::RunContext &);
+    template void
+    report_mesh<3>(const geometry::CutMesh<3> &, io::RunContext &);
+  } // namespace app
+} // namespace porofrac

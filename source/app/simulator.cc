@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <porofrac/app/mesh_report.h>
+#include <porofrac/app/simulator.h>
+#include <porofrac/base/config.h>
+#include <porofrac/base/exceptions.h>
+#include <porofrac/geometry/mesh_generator.h>
+#include <porofrac/geometry/mesh_output.h>
+#include <porofrac/geometry/parameters.h>
+#include <porofrac/io/run_context.h>
+// MECHANICS HOOK (include)
+// FLOW HOOK (include)
+
+#include <filesystem>
+#include <iostream>
+
+namespace porofrac
+{
+  namespace app
+  {
+    template <int dim>
+    void
+    run_scene(dealii::ParameterHandler &prm,
+              const std::string        &deck_path,
+              const std::string        &output_directory,
+              std::ostream             &report)
+    {
+      using namespace dealii;
+      Timer wall_clock;
+      const std::filesystem::path deck(deck_path);
+      const std::string           physics = prm.get("Physics");
+      std::string                 scene   = prm.get("Scene name");
+      if (scene.empty())
+        scene = deck.stem().string();
+
+      prm.enter_subsection("Output");
+      const std::string format       = prm.get("Format");
+      const std::string verbosity    = prm.get("Verbosity");
+      const bool        print_timers = prm.get("Timer output") == "summary" && verbosity != "quiet";
+      prm.leave_subsection();
+
+      std::error_code ec;
+      std::filesystem::create_directories(output_directory, ec);
+      check_input(std::filesystem::is_directory(output_directory), "--output-dir",
+                  "cannot create the output directory '" + output_directory + "'");
+
+      ConditionalOStream progress(std::cout, verbosity != "quiet");
+      ConditionalOStream verbose(std::cout, verbosity == "verbose");
+      TimerOutput        timer(progress, TimerOutput::never, TimerOutput::wall_times);
+      io::Json           summary = io::Json::object();
+      summary["scene"]           = scene;
+      summary["physics"]         = physics;
+      summary["dim"]             = dim;
+      summary["porofrac_version"] = version;
+      io::RunContext context{deck.filename().string(), output_directory, report, progress, verbose,
+                             timer, summary, format};
+
+      geometry::GeometryParameters geometry_parameters;
+      geometry_parameters.parse_parameters(prm, deck.parent_path().string());
+      progress << "*** Building the cut mesh" << std::endl;
+      std::unique_ptr<geometry::CutMesh<dim>> mesh;
+      {
+        TimerOutput::Scope t(timer, "Geometry: mesh generation and cut");
+        mesh = geometry::make_cut_mesh<dim>(geometry_parameters);
+      }
+      report_mesh(*mesh, context);
+      summary["n_cells"]            = mesh->triangulation.n_active_cells();
+      summary["n_fracture_faces"]   = static_cast<unsigned int>(mesh->fracture_faces.size());
+      summary["n_dofs_mechanics"]   = 0;
+      summary["n_unknowns_flow"]    = 0;
+      {
+        TimerOutput::Scope t(timer, "Output: mesh");
+        geometry::write_mesh(*mesh, context.path("mesh"), format);
+      }
+
+      if (physics == "contact mechanics")
+        {
+          // MECHANICS HOOK (run)
+          throw InputError("Physics", "'contact mechanics' is not available in this build yet");
+        }
+      else if (physics == "two-phase flow")
+        {
+          // FLOW HOOK (run)
+          throw InputError("Physics", "'two-phase flow' is not available in this build yet");
+        }
+      else if (physics == "poromechanics")
+        throw InputError("Physics", "'poromechanics' is not available in this build yet");
+
+      summary["wall_time_s"]    = wall_clock.wall_time();
+      Utilities::System::MemoryStats memory;
+      Utilities::System::get_memory_stats(memory);
+      summary["peak_memory_mb"] = memory.VmHWM / 1024.;
+      summary.write_file(context.path("summary.json"));
+      progress << "*** Wrote " << context.path("summary.json") << std::endl;
+      if (print_timers)
+        timer.print_summary();
+    }
+
+
+
+    template void
+    run_scene<2>(dealii::ParameterHandler &, const std::string &, const std::string &,
+                 std::ostream &);
+    template void
+    run_scene<3>(dealii::ParameterHandler &, const std::string &, const std::string &,
+                 std::ostream &);
+  } // namespace app
+} // namespace porofrac

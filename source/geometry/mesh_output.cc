@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/geometry/mesh_output.h>
+#include <porofrac/geometry/mesh_quality.h>
+#include <porofrac/geometry/simplex_tools.h>
+
+#include <fstream>
+#include <iomanip>
+
+namespace porofrac
+{
+  namespace geometry
+  {
+    template <int dim>
+    void
+    write_fracture_cells(const CutMesh<dim>   &mesh,
+                         const std::string    &filename,
+                         const std::string    &format,
+                         const FractureFields &extra)
+    {
+      std::ofstream out(filename);
+      AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
+      out << std::setprecision(12);
+      const auto &faces = mesh.fracture_faces;
+      FractureFields fields = {{"fracture_id", {}}, {"face_id", {}}, {"abscissa", {}},
+                               {"distance_to_tip", {}}};
+      for (const auto &f : faces)
+        {
+          fields[0].second.push_back(f.fracture_id);
+          fields[1].second.push_back(f.index);
+          fields[2].second.push_back(f.abscissa);
+          fields[3].second.push_back(std::isfinite(f.distance_to_tip) ? f.distance_to_tip : -1.);
+        }
+      for (const auto &e : extra)
+        {
+          AssertThrow(e.second.size() == faces.size(),
+                      ExcMessage("fracture field '" + e.first + "' has the wrong size"));
+          fields.push_back(e);
+        }
+      const unsigned int n_points = dim * faces.size();
+      // Points: the dim vertices of each face (faces are written unconnected).
+      auto write_points = [&](const char *sep) {
+        for (const auto &f : faces)
+          for (const unsigned int n : f.nodes)
+            {
+              const auto &p = mesh.fracture_nodes[n].location;
+              out << p[0] << ' ' << p[1] << ' ' << (dim == 3 ? p[dim - 1] : 0.) << sep;
+            }
+      };
+      const int vtk_type = (dim == 2) ? 3 : 5; // VTK_LINE, VTK_TRIANGLE
+      if (format == "vtk")
+        {
+          out << "# vtk DataFile Version 3.0\nPoroFrac fracture faces\nASCII\n"
+              << "DATASET UNSTRUCTURED_GRID\nPOINTS " << n_points << " double\n";
+          write_points("\n");
+          out << "CELLS " << faces.size() << ' ' << (dim + 1) * faces.size() << '\n';
+          for (unsigned int i = 0; i < faces.size(); ++i)
+            {
+              out << dim;
+              for (unsigned int k = 0; k < dim; ++k)
+                out << ' ' << dim * i + k;
+              out << '\n';
+            }
+          out << "CELL_TYPES " << faces.size() << '\n';
+          for (unsigned int i = 0; i < faces.size(); ++i)
+            out << vtk_type << '\n';
+          out << "CELL_DATA " << faces.size() << '\n';
+          for (const auto &[name, values] : fields)
+            {
+              out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
+              for (const double v : values)
+                out << v << '\n';
+            }
+          return;
+        }
+      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\""
+          << faces.size() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+          << "format=\"ascii\">\n";
+      write_points("\n");
+      out << "</DataArray>\n</Points>\n<Cells>\n"
+          << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (unsigned int i = 0; i < n_points; ++i)
+        out << i << ' ';
+      out << "\n</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
+      for (unsigned int i = 0; i < faces.size(); ++i)
+        out << dim * (i + 1) << ' ';
+      out << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+      for (unsigned int i = 0; i < faces.size(); ++i)
+        out << vtk_type << ' ';
+      out << "\n</DataArray>\n</Cells>\n<CellData>\n";
+      for (const auto &[name, values] : fields)
+        {
+          out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+          for (const double v : values)
+            out << v << ' ';
+          out << "\n</DataArray>\n";
+        }
+      out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    }
+
+
+
+    template <int dim>
+    void
+    write_mesh(const CutMesh<dim> &mesh, const std::string &basename, const std::string &format)
+    {
+      if (format == "none")
+        return;
+      const auto   &tria = mesh.triangulation;
+      DoFHandler<dim> dof_handler(tria);
+      dof_handler.distribute_dofs(FE_SimplexP<dim>(1));
+      Vector<double> material(tria.n_active_cells()), centre_inside(tria.n_active_cells());
+      const auto     centres = cell_circumcentres(tria);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          std::array<Point<dim>, dim + 1> p;
+          for (unsigned int i = 0; i < dim + 1; ++i)
+            p[i] = cell->vertex(i);
+          material[cell->active_cell_index()] = cell->material_id();
+          centre_inside[cell->active_cell_index()] =
+            contains<dim>(p, centres[cell->active_cell_index()], 1e-10) ? 1 : 0;
+        }
+      DataOut<dim> data_out;
+      data_out.attach_dof_handler(dof_handler);
+      data_out.add_data_vector(material, "material_id", DataOut<dim>::type_cell_data);
+      data_out.add_data_vector(centre_inside, "circumcentre_inside", DataOut<dim>::type_cell_data);
+      data_out.build_patches(mesh.mapping());
+      std::ofstream out(basename + "." + format);
+      AssertThrow(out, ExcMessage("cannot write '" + basename + "." + format + "'"));
+      if (format == "vtk")
+        data_out.write_vtk(out);
+      else
+        data_out.write_vtu(out);
+      write_fracture_cells(mesh, basename + "_fractures." + format, format);
+    }
+
+
+
+    template void
+    write_fracture_cells<2>(const CutMesh<2> &, const std::string &, const std::string &,
+                            const FractureFields &);
+    template void
+    write_fracture_cells<3>(const CutMesh<3> &, const std::string &, const std::string &,
+                            const FractureFields &);
+    template void
+    write_mesh<2>(const CutMesh<2> &, const std::string &, const std::string &);
+    template void
+    write_mesh<3>(const CutMesh<3> &, const std::string &, const std::string &);
+  } // namespace geometry
+} // namespace porofrac
