@@ -1,0 +1,32 @@
+# Runs one PoroFrac test (see tests/CMakeLists.txt) and compares its output with numdiff.
+file(REMOVE_RECURSE ${WORKDIR})
+file(MAKE_DIRECTORY ${WORKDIR})
+string(REPLACE "|" ";" EXTRA_ARGS "${EXTRA_ARGS}")
+string(REPLACE "|" ";" NUMDIFF_ARGS "${NUMDIFF_ARGS}")
+if(INPUT)
+  set(_command ${EXECUTABLE} ${INPUT} --output-dir ${WORKDIR}/out ${EXTRA_ARGS})
+else()
+  set(_command ${EXECUTABLE} ${EXTRA_ARGS})
+endif()
+execute_process(COMMAND ${_command}
+  WORKING_DIRECTORY ${WORKDIR}
+  OUTPUT_VARIABLE _out ERROR_VARIABLE _err RESULT_VARIABLE _status)
+file(WRITE ${WORKDIR}/output "${_out}${_err}")
+if(EXPECT_FAILURE)
+  if(_status EQUAL 0)
+    message(FATAL_ERROR "The run was expected to fail but exited with status 0:\n${_out}${_err}")
+  endif()
+elseif(NOT _status EQUAL 0)
+  message(FATAL_ERROR "The run exited with status ${_status}:\n${_out}${_err}")
+endif()
+if(NOT EXISTS ${EXPECTED})
+  message(FATAL_ERROR "No expected output ${EXPECTED}; this run's output is ${WORKDIR}/output")
+endif()
+execute_process(COMMAND ${NUMDIFF} -q ${NUMDIFF_ARGS} -s " \t\n=,:<>[](){}^" ${EXPECTED} ${WORKDIR}/output
+  OUTPUT_VARIABLE _diff ERROR_VARIABLE _diff_err RESULT_VARIABLE _differs)
+if(NOT _differs EQUAL 0)
+  execute_process(COMMAND ${NUMDIFF} ${NUMDIFF_ARGS} -s " \t\n=,:<>[](){}^" ${EXPECTED} ${WORKDIR}/output
+    OUTPUT_VARIABLE _diff)
+  message(FATAL_ERROR "Output differs from ${EXPECTED}:\n${_diff}")
+endif()
+message(STATUS "Output matches ${EXPECTED}")
