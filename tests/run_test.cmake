@@ -4,7 +4,9 @@ file(MAKE_DIRECTORY ${WORKDIR})
 string(REPLACE "|" ";" EXTRA_ARGS "${EXTRA_ARGS}")
 string(REPLACE "|" ";" NUMDIFF_ARGS "${NUMDIFF_ARGS}")
 if(INPUT)
-  set(_command ${EXECUTABLE} ${INPUT} --output-dir ${WORKDIR}/out ${EXTRA_ARGS})
+  # Tests compare the results report only: no progress lines, no timer tables.
+  set(_command ${EXECUTABLE} ${INPUT} --output-dir ${WORKDIR}/out
+    --set Output/Verbosity=quiet --set "Output/Timer output=none" ${EXTRA_ARGS})
 else()
   set(_command ${EXECUTABLE} ${EXTRA_ARGS})
 endif()

@@ -5,6 +5,7 @@
 #include <gmsh.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -329,7 +330,8 @@ namespace porofrac
     {
       check_input(!filename.empty(), parameter, "no mesh file given");
       check_input(std::ifstream(filename).good(), parameter,
-                  "cannot open mesh file '" + filename + "'");
+                  "cannot open mesh file '" + std::filesystem::path(filename).filename().string() +
+                    "'");
       const bool is_geo = filename.size() > 4 && filename.substr(filename.size() - 4) == ".geo";
       const bool is_msh = filename.size() > 4 && filename.substr(filename.size() - 4) == ".msh";
       check_input(is_geo || is_msh, parameter,
@@ -343,7 +345,7 @@ namespace porofrac
         }
       catch (...)
         {
-          throw InputError(parameter, "gmsh could not read '" + filename + "'");
+          throw InputError(parameter, "gmsh could not read '" + std::filesystem::path(filename).filename().string() + "'");
         }
       return extract_mesh<dim>(parameter);
     }

@@ -32,15 +32,18 @@ namespace porofrac
       std::string
       pattern_of(const std::string &message)
       {
-        const std::string key = "does not match the pattern";
+        const std::string key = "does not match the given pattern <";
         const auto        pos = message.find(key);
         if (pos == std::string::npos)
           return "";
-        std::string rest = trim(message.substr(pos + key.size()));
-        rest             = rest.substr(0, rest.find('\n'));
-        if (rest.size() > 2 && rest.front() == '"' && rest.back() == '"')
-          rest = rest.substr(1, rest.size() - 2);
-        return rest;
+        const std::string rest = message.substr(pos + key.size());
+        std::string pattern = rest.substr(0, rest.find(">."));
+        // Collapse deal.II's line breaks and indentation into single spaces.
+        std::string collapsed;
+        for (const char c : pattern)
+          if (!std::isspace(static_cast<unsigned char>(c)) || (!collapsed.empty() && collapsed.back() != ' '))
+            collapsed += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+        return collapsed;
       }
     } // namespace
 
@@ -129,7 +132,7 @@ namespace porofrac
     {
       std::ifstream in(filename);
       if (!in)
-        throw InputError("deck", "cannot open '" + filename + "'");
+        throw InputError("deck", "cannot open '" + filename.substr(filename.rfind('/') + 1) + "'");
       std::vector<std::string> path;
       std::string              line, logical;
       unsigned int             line_no = 0, start_line = 0;
@@ -181,6 +184,17 @@ namespace porofrac
                 {
                   throw InputError(e.parameter, where + e.reason);
                 }
+            }
+          else if (statement.rfind("include ", 0) == 0)
+            {
+              // Shared fragments (e.g. a scene's geometry), relative to this deck, top level only.
+              if (!path.empty())
+                throw InputError("deck", where + "'include' is only allowed outside subsections");
+              std::string file = trim(statement.substr(8));
+              const auto  slash = filename.rfind('/');
+              if (!file.empty() && file[0] != '/' && slash != std::string::npos)
+                file = filename.substr(0, slash + 1) + file;
+              read(file);
             }
           else
             throw InputError("deck", where + "cannot read '" + statement.substr(0, 40) +
