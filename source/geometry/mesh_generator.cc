@@ -357,6 +357,10 @@ namespace porofrac
     make_cut_mesh(const GeometryParameters &prm)
     {
       RawMesh<dim> raw;
+      check_input(prm.domain == "mesh file" || prm.mesh_size > 0, "Geometry/Mesh size",
+                  "must be positive");
+      check_input(prm.domain == "mesh file" || prm.fracture_mesh_size > 0,
+                  "Geometry/Fracture mesh size", "must be positive");
       if (prm.domain == "mesh file")
         raw = read_gmsh_file<dim>(prm.mesh_file, "Geometry/Mesh file");
       else
