@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Flow laws: Corey and van Genuchten saturations, capillary energy U against an independent
+// quadrature of int_0^pc q S'(q) dq, derivatives against centred finite differences, van
+// Genuchten-Mualem and linear relative permeabilities, Kozeny-Carman, and bad-input errors.
+// Every check prints "ok" or the failing values.
+#include <porofrac/base/exceptions.h>
+#include <porofrac/flow/laws.h>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+
+using namespace porofrac;
+using namespace porofrac::flow;
+
+namespace
+{
+  unsigned int failures = 0;
+
+  void
+  check(const std::string &what, const double value, const double expected, const double tol)
+  {
+    const double err = std::abs(value - expected) / std::max(1., std::abs(expected));
+    if (err <= tol)
+      std::cout << "ok: " << what << std::endl;
+    else
+      {
+        ++failures;
+        std::cout << "FAILED: " << what << " value " << value << " expected " << expected
+                  << std::endl;
+      }
+  }
+
+  double
+  fd(const std::function<double(double)> &f, const double x, const double h)
+  {
+    return (f(x + h) - f(x - h)) / (2 * h);
+  }
+
+  // Independent midpoint-rule quadrature of U = int_0^pc q S'(q) dq with 2e5 intervals.
+  double
+  energy_quadrature(const SaturationLaw &law, const double pc)
+  {
+    const unsigned int n = 200000;
+    double             U = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double q = (k + 0.5) * pc / n;
+        U += q * law.derivative(q) * pc / n;
+      }
+    return U;
+  }
+
+  template <typename F>
+  void
+  expect_error(const std::string &what, F f)
+  {
+    try
+      {
+        f();
+        ++failures;
+        std::cout << "FAILED: no error for " << what << std::endl;
+      }
+    catch (const InputError &e)
+      {
+        std::cout << "error (" << what << "): " << e.what() << std::endl;
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  const SaturationLaw corey = SaturationLaw::corey(2e8);
+  const SaturationLaw vg    = SaturationLaw::van_genuchten(1.5e7, 1.49);
+  // Corey saturation, closed form at p_c = R: 1 - 1/e
+  check("Corey S(R)", corey.saturation(2e8), 1. - std::exp(-1.), 1e-14);
+  check("Corey S(-1) = 0", corey.saturation(-1.), 0., 0);
+  check("Corey inverse", corey.inverse(0.35, "x"), 86.157e6, 1e-5 * 86.157e6);
+  for (const double pc : {1e6, 8.6e7, 4e8})
+    {
+      check("Corey U vs quadrature at " + std::to_string(pc), corey.energy(pc),
+            energy_quadrature(corey, pc), 1e-8 * pc);
+      check("Corey S' vs FD", corey.derivative(pc) * 2e8,
+            fd([&](double x) { return corey.saturation(x); }, pc, 1e3) * 2e8, 1e-7);
+      check("Corey U' = pc S'", fd([&](double x) { return corey.energy(x); }, pc, 1e3),
+            pc * corey.derivative(pc), 1e-6);
+      check("vG U vs quadrature", vg.energy(pc), energy_quadrature(vg, pc), 1e-6 * pc);
+      check("vG S' vs FD", vg.derivative(pc) * 1.5e7,
+            fd([&](double x) { return vg.saturation(x); }, pc, 1e2) * 1.5e7, 1e-6);
+      check("vG inverse", vg.inverse(vg.saturation(pc), "x"), pc, 1e-9 * pc);
+    }
+  // Fracture Corey law of 5.3: p_c for s = 1 - 1e-8 (specs.md 1.2).
+  check("Corey fracture inverse", SaturationLaw::corey(1e2).inverse(1 - 1e-8, "x"), 1842.068, 1e-6 * 1842);
+
+  const RelativePermeability vgm = RelativePermeability::van_genuchten_mualem(0.328, 0.35, 0.);
+  const RelativePermeability lin = RelativePermeability::linear();
+  check("VGM k_rw(s_w = 1) = 1", vgm.value(0, 0.), 1., 1e-14);
+  check("VGM k_rw(s_w = S_lr) = 0", vgm.value(0, 0.65), 0., 1e-14);
+  check("VGM k_rnw(s_w = S_lr) = 1", vgm.value(1, 0.65), 1., 1e-14);
+  check("VGM k_rnw(s_nw = 0) = 0", vgm.value(1, 0.), 0., 1e-14);
+  {
+    // s = 0.5: k_rw = sqrt(.5) (1 - (1 - .5^(1/q))^q)^2
+    const double s = 0.5, q = 0.328, B = 1 - std::pow(s, 1 / q);
+    check("VGM k_rw(s=1/2)", vgm.value(0, 1 - 0.35 - 0.5 * 0.65),
+          std::sqrt(s) * std::pow(1 - std::pow(B, q), 2), 1e-14);
+    check("VGM k_rnw(s=1/2)", vgm.value(1, 1 - 0.35 - 0.5 * 0.65),
+          std::sqrt(1 - s) * std::pow(B, 2 * q), 1e-14);
+  }
+  for (const double snw : {0.05, 0.3, 0.6})
+    for (unsigned int phase = 0; phase < 2; ++phase)
+      {
+        check("VGM dk_r/ds FD phase " + std::to_string(phase) + " s_nw " + std::to_string(snw),
+              vgm.derivative(phase, snw),
+              fd([&](double x) { return vgm.value(phase, x); }, snw, 1e-7), 1e-6);
+        check("linear dk_r/ds FD", lin.derivative(phase, snw),
+              fd([&](double x) { return lin.value(phase, x); }, snw, 1e-7), 1e-8);
+      }
+  check("Kozeny-Carman at phi0 = K0", kozeny_carman(5e-20, 0.15, 0.15) * 1e20, 5., 1e-14);
+  check("Kozeny-Carman derivative FD",
+        kozeny_carman_derivative(5e-20, 0.15, 0.2) * 1e20,
+        fd([](double x) { return kozeny_carman(5e-20, 0.15, x) * 1e20; }, 0.2, 1e-6), 1e-7);
+
+  RockType rock;
+  rock.relative_permeability = vgm;
+  rock.viscosity[1]          = 1.851e-5;
+  check("mobility nw = k_r/mu", rock.mobility(1, 0.3), vgm.value(1, 0.3) / 1.851e-5, 1e-14);
+
+  expect_error("S_lr + S_gr >= 1",
+               [] { RelativePermeability::van_genuchten_mualem(0.3, 0.6, 0.4, "Flow/Matrix"); });
+  expect_error("zero viscosity", [] {
+    RockType r;
+    r.viscosity[0] = 0.;
+    r.validate("Flow/Matrix");
+  });
+  expect_error("negative R", [] { SaturationLaw::corey(-1., "Flow/Matrix/Corey R"); });
+  expect_error("saturation outside [0,1]",
+               [&] { corey.inverse(1.2, "Flow/Boundary conditions/Matrix"); });
+
+  std::cout << (failures == 0 ? "all checks passed" : "FAILURES") << std::endl;
+  return failures == 0 ? 0 : 1;
+}
