@@ -6,6 +6,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/geometry/cut_mesh.h>
 #include <porofrac/geometry/simplex_tools.h>
+#include <porofrac/io/text.h>
 
 #include <algorithm>
 #include <limits>
@@ -20,21 +21,6 @@ namespace porofrac
   {
     namespace
     {
-      std::string
-      point_text(const Point<2> &p)
-      {
-        std::ostringstream s;
-        s << "(" << p[0] << ", " << p[1] << ")";
-        return s.str();
-      }
-      std::string
-      point_text(const Point<3> &p)
-      {
-        std::ostringstream s;
-        s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-        return s.str();
-      }
-
       /// Small union-find over local indices.
       struct UnionFind
       {
@@ -125,16 +111,16 @@ namespace porofrac
           POROFRAC_CHECK_INPUT(it != cells_of_face.end(),
                       InputError("Geometry",
                                  "a fracture face at " +
-                                   point_text(face_centre<dim>(V, raw.fracture_faces[k].vertices)) +
+                                   io::to_text(face_centre<dim>(V, raw.fracture_faces[k].vertices)) +
                                    " is not a face of the mesh"));
           POROFRAC_CHECK_INPUT(it->second.size() == 2,
                       InputError("Geometry",
                                  "fracture " + std::to_string(raw.fracture_faces[k].tag) +
                                    " lies on the outer boundary at " +
-                                   point_text(face_centre<dim>(V, key))));
+                                   io::to_text(face_centre<dim>(V, key))));
           POROFRAC_CHECK_INPUT(fracture_face_of_key.emplace(key, k).second,
                       InputError("Geometry",
-                                 "two fractures overlap at " + point_text(face_centre<dim>(V, key))));
+                                 "two fractures overlap at " + io::to_text(face_centre<dim>(V, key))));
         }
       std::set<unsigned int> boundary_vertices;
       for (const auto &f : raw.boundary_faces)
@@ -224,7 +210,7 @@ namespace porofrac
                   POROFRAC_CHECK_INPUT(fs.size() <= 2,
                               InputError("Geometry/Fractures",
                                          "fracture " + std::to_string(fid) +
-                                           " branches or crosses itself at " + point_text(V[v])));
+                                           " branches or crosses itself at " + io::to_text(V[v])));
                   if (fs.size() == 1)
                     ends.push_back(v);
                 }
@@ -293,7 +279,7 @@ namespace porofrac
           const auto    it  = cells_of_face.find(key);
           POROFRAC_CHECK_INPUT(it != cells_of_face.end() && it->second.size() == 1,
                       InputError("Geometry", "a boundary face at " +
-                                               point_text(face_centre<dim>(V, key)) +
+                                               io::to_text(face_centre<dim>(V, key)) +
                                                " is not on the outer boundary of the mesh"));
           add_boundary(cut_face(it->second[0], f.vertices), f.tag);
           outer_ids.insert(f.tag);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
 #include <porofrac/geometry/fracture_network.h>
+#include <porofrac/io/text.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,16 +14,9 @@ namespace porofrac
 {
   namespace geometry
   {
+    using io::trim;
     namespace
     {
-      std::string
-      text(const Point<2> &p)
-      {
-        std::ostringstream s;
-        s << "(" << p[0] << ", " << p[1] << ")";
-        return s.str();
-      }
-
       double
       cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
       {
@@ -122,13 +116,6 @@ namespace porofrac
         throw InputError(parameter, "'" + s + "' is not a number");
       }
 
-      std::string
-      trim(const std::string &s)
-      {
-        const auto b = s.find_first_not_of(" \t\n\r");
-        const auto e = s.find_last_not_of(" \t\n\r");
-        return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-      }
     } // namespace
 
 
@@ -233,21 +220,21 @@ namespace porofrac
           const std::string name = "fracture " + std::to_string(f.id);
           for (unsigned int k = 0; k + 1 < f.points.size(); ++k)
             if (f.points[k].distance(f.points[k + 1]) <= tol)
-              throw InputError(parameter, name + ": segment from " + text(f.points[k]) + " to " +
-                                            text(f.points[k + 1]) + " has zero length");
+              throw InputError(parameter, name + ": segment from " + io::to_text(f.points[k]) + " to " +
+                                            io::to_text(f.points[k + 1]) + " has zero length");
           for (unsigned int k = 0; k < f.points.size(); ++k)
             {
               const bool end = (k == 0 || k + 1 == f.points.size());
               if (on_boundary(f.points[k]))
                 {
                   if (!end)
-                    throw InputError(parameter, name + ": point " + text(f.points[k]) +
+                    throw InputError(parameter, name + ": point " + io::to_text(f.points[k]) +
                                                   " lies on the domain boundary; only the end "
                                                   "points of a fracture may");
                 }
               else if (!inside_polygon(f.points[k], poly))
                 throw InputError(parameter,
-                                 name + ": point " + text(f.points[k]) + " lies outside the domain");
+                                 name + ": point " + io::to_text(f.points[k]) + " lies outside the domain");
             }
           for (unsigned int k = 0; k + 1 < f.points.size(); ++k)
             {
@@ -257,14 +244,14 @@ namespace porofrac
                   const Meeting m = meet(a, b, poly[i], poly[(i + 1) % poly.size()], tol);
                   if (m.kind == Meeting::overlap)
                     throw InputError(parameter, name + " runs along the domain boundary between " +
-                                                  text(m.overlap_begin) + " and " +
-                                                  text(m.overlap_end));
+                                                  io::to_text(m.overlap_begin) + " and " +
+                                                  io::to_text(m.overlap_end));
                   if (m.kind == Meeting::point && m.where.distance(a) > tol &&
                       m.where.distance(b) > tol)
-                    throw InputError(parameter, name + " leaves the domain at " + text(m.where));
+                    throw InputError(parameter, name + " leaves the domain at " + io::to_text(m.where));
                 }
               if (!on_boundary(0.5 * (a + b)) && !inside_polygon(0.5 * (a + b), poly))
-                throw InputError(parameter, name + ": segment from " + text(a) + " to " + text(b) +
+                throw InputError(parameter, name + ": segment from " + io::to_text(a) + " to " + io::to_text(b) +
                                               " lies outside the domain");
               // Self-crossings of the polyline.
               for (unsigned int j = k + 1; j + 1 < f.points.size(); ++j)
@@ -272,10 +259,10 @@ namespace porofrac
                   const Meeting m = meet(a, b, f.points[j], f.points[j + 1], tol);
                   if (m.kind == Meeting::overlap)
                     throw InputError(parameter, name + " overlaps itself between " +
-                                                  text(m.overlap_begin) + " and " +
-                                                  text(m.overlap_end));
+                                                  io::to_text(m.overlap_begin) + " and " +
+                                                  io::to_text(m.overlap_end));
                   if (m.kind == Meeting::point && j > k + 1)
-                    throw InputError(parameter, name + " crosses itself at " + text(m.where));
+                    throw InputError(parameter, name + " crosses itself at " + io::to_text(m.where));
                 }
             }
         }
@@ -291,8 +278,8 @@ namespace porofrac
                 if (m.kind == Meeting::overlap)
                   throw InputError(parameter, "fractures " + std::to_string(fractures[i].id) +
                                                 " and " + std::to_string(fractures[j].id) +
-                                                " overlap between " + text(m.overlap_begin) +
-                                                " and " + text(m.overlap_end));
+                                                " overlap between " + io::to_text(m.overlap_begin) +
+                                                " and " + io::to_text(m.overlap_end));
               }
     }
 

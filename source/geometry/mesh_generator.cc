@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
 #include <porofrac/geometry/mesh_generator.h>
+#include <porofrac/io/text.h>
 
 #include <gmsh.h>
 
@@ -16,6 +17,7 @@ namespace porofrac
 {
   namespace geometry
   {
+    using io::trim;
     namespace
     {
       /// Initializes gmsh for the lifetime of the object, quietly.
@@ -32,14 +34,6 @@ namespace porofrac
           gmsh::finalize();
         }
       };
-
-      std::string
-      trim(const std::string &s)
-      {
-        const auto b = s.find_first_not_of(" \t\n\r");
-        const auto e = s.find_last_not_of(" \t\n\r");
-        return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-      }
 
       /// Reads the current gmsh model's mesh into a RawMesh (see read_gmsh_file for the rules).
       template <int dim>

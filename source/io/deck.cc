@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
 #include <porofrac/io/deck.h>
+#include <porofrac/io/text.h>
 
 #include <fstream>
 #include <sstream>
@@ -11,14 +12,6 @@ namespace porofrac
   {
     namespace
     {
-      std::string
-      trim(const std::string &s)
-      {
-        const auto b = s.find_first_not_of(" \t\r\n");
-        const auto e = s.find_last_not_of(" \t\r\n");
-        return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-      }
-
       std::string
       join(const std::vector<std::string> &path, const std::string &last)
       {
