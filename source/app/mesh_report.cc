@@ -3,6 +3,7 @@
 #include <porofrac/base/config.h>
 #include <porofrac/geometry/mesh_quality.h>
 
+#include <cmath>
 #include <iomanip>
 
 namespace porofrac
@@ -18,10 +19,28 @@ namespace porofrac
       const auto                  flags = out.flags();
       const auto                  precision = out.precision();
       out << std::scientific << std::setprecision(4);
+      // Checks a user can trust at a glance: the cells tile the domain, and the two sides of every
+      // fracture face are coincident faces of two different cells.
+      double measure = 0;
+      for (const auto &cell : mesh.triangulation.active_cell_iterators())
+        measure += cell->measure();
+      unsigned int n_matching = 0;
+      for (const auto &f : mesh.fracture_faces)
+        {
+          const auto plus  = f.cell[geometry::plus]->face(f.face_no[geometry::plus]);
+          const auto minus = f.cell[geometry::minus]->face(f.face_no[geometry::minus]);
+          const double tol = 1e-10 * std::sqrt(f.measure) * (dim == 3 ? 1. : std::sqrt(f.measure));
+          n_matching += (f.cell[geometry::plus] != f.cell[geometry::minus]) &&
+                        plus->center().distance(minus->center()) <= tol &&
+                        plus->center().distance(f.centre) <= tol &&
+                        std::abs(plus->measure() - minus->measure()) <= 1e-12 * f.measure;
+        }
       out << "Mesh:\n"
           << "  cells: " << q.n_cells << "\n"
           << "  vertices: " << q.n_vertices << " (" << mesh.n_uncut_vertices << " before cutting)\n"
-          << "  fracture faces: " << q.n_fracture_faces << "\n";
+          << "  fracture faces: " << q.n_fracture_faces << ", with coincident sides in two cells: "
+          << n_matching << "\n"
+          << "  measure of the cells: " << measure << "\n";
       io::Json fractures = io::Json::array();
       for (const unsigned int id : mesh.fracture_ids)
         {
@@ -60,6 +79,8 @@ namespace porofrac
       m["n_vertices"]               = q.n_vertices;
       m["n_vertices_before_cut"]    = mesh.n_uncut_vertices;
       m["n_fracture_faces"]         = q.n_fracture_faces;
+      m["n_fracture_faces_with_coincident_sides"] = n_matching;
+      m["measure"]                  = measure;
       m["fractures"]                = fractures;
       m["n_tips"]                   = n_tips;
       m["n_corners"]                = n_corners;

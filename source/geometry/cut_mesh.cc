@@ -426,7 +426,16 @@ namespace porofrac
       // --- Node types, then distances to genuine tips.
       for (auto &node : fracture_nodes)
         {
-          if (node.on_boundary)
+          if (dim == 3)
+            {
+              // In 3D a fracture vertex has many faces; the side regions tell: one at a tip
+              // (the fracture's edge inside the domain), two inside, more at intersections.
+              node.type = node.on_boundary        ? NodeType::boundary :
+                          node.copies.size() == 1 ? NodeType::tip :
+                          node.copies.size() > 2  ? NodeType::intersection :
+                                                    NodeType::interior;
+            }
+          else if (node.on_boundary)
             node.type = NodeType::boundary;
           else if (node.faces.size() == 1)
             node.type = NodeType::tip;

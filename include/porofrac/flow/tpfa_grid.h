@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_FLOW_TPFA_GRID_H
+#define POROFRAC_FLOW_TPFA_GRID_H
+
+#include <deal.II/base/point.h>
+
+#include <porofrac/geometry/cut_mesh.h>
+
+#include <set>
+#include <vector>
+
+namespace porofrac
+{
+  namespace flow
+  {
+    using namespace dealii;
+
+    /// Rock types: 0 = matrix, 1 = fracture (also the rock of the interface layer, as in 5.3).
+    enum Rock : unsigned int
+    {
+      matrix_rock   = 0,
+      fracture_rock = 1
+    };
+
+    /**
+     * Two-point flux connectivity of the hybrid-dimensional model (paper Section 4.1, Fig. 5;
+     * specs.md 3b), as a graph of flow nodes joined by two-point connections:
+     *
+     * - matrix cells (centre = circumcentre), numbered like active_cell_index();
+     * - fracture cells, one per fracture face sigma (measure |sigma| d_f), numbered after them;
+     * - matrix-fracture interface nodes K sigma, one per side of every fracture face (massless:
+     *   no damaged layer);
+     * - intersection nodes s where >= 3 fracture faces meet (massless, flux balance per phase);
+     * - Dirichlet nodes at the centres of matrix boundary faces and at fracture nodes on the outer
+     *   boundary whose boundary id has a Dirichlet condition.
+     *
+     * A connection joins two nodes a, b with a transmissibility T and, for each end, the rock type
+     * whose laws give the upwind mobility at that end. Transmissibilities (update_transmissibilities)
+     * depend on the per-cell inputs `permeability`, `aperture` and the normal transmissibility
+     * Lambda_f, that another module may change between solves:
+     * - matrix-matrix: |e| / (d_K,e/K_K + d_L,e/K_L) (signed circumcentre distances);
+     * - matrix-boundary and matrix-interface: |e| K_K / d_K,e;
+     * - interface-fracture: |sigma| Lambda_f (eq. (3));
+     * - fracture-fracture through a node s with two faces: harmonic mean of the half
+     *   transmissibilities (d_f^3/12) |s| / dist(x_sigma, s); three or more faces, or a Dirichlet
+     *   node: one half transmissibility per face to the node.
+     * With `axisymmetric`, measures carry the weight 2 pi r with r = the second coordinate
+     * (specs.md 1.4). Fracture-fracture connections are built in 2D only (3D fractures would
+     * need connections through fracture edges).
+     */
+    template <int dim>
+    class TpfaGrid
+    {
+    public:
+      enum class NodeKind
+      {
+        matrix,
+        fracture,
+        interface,
+        intersection,
+        dirichlet_matrix,
+        dirichlet_fracture
+      };
+
+      struct Node
+      {
+        NodeKind           kind;
+        Rock               rock;
+        /// Weighted cell measure (matrix), weighted face measure (fracture), 0 otherwise.
+        double             measure;
+        Point<dim>         centre;
+        types::boundary_id boundary_id = numbers::invalid_boundary_id;
+      };
+
+      enum class ConnectionKind
+      {
+        matrix_matrix,
+        matrix_boundary,
+        matrix_interface,
+        interface_fracture,
+        fracture_fracture,
+        fracture_node
+      };
+
+      struct Connection
+      {
+        ConnectionKind kind;
+        unsigned int   a, b;
+        Rock           rock_a, rock_b;
+        /// Weighted face measure (|e|, |sigma|, or |s| for fracture connections).
+        double area;
+        /// Distances from the centres of a and b to the face (d_b unused for one-sided ones).
+        double d_a, d_b;
+        double transmissibility = 0;
+      };
+
+      TpfaGrid(const geometry::CutMesh<dim>           &mesh,
+               const bool                              axisymmetric,
+               const std::set<types::boundary_id>     &matrix_dirichlet_ids,
+               const std::set<types::boundary_id>     &fracture_dirichlet_ids);
+
+      /// Recomputes every transmissibility from permeability, aperture and Lambda_f; validates
+      /// them (InputError naming Flow/...).
+      void
+      update_transmissibilities();
+
+      /// Pore measure of node i: |K| phi_K, |sigma| d_f, or 0.
+      double
+      pore_volume(const unsigned int i) const;
+
+      unsigned int
+      n_nodes() const
+      {
+        return nodes.size();
+      }
+      bool
+      is_dirichlet(const unsigned int i) const
+      {
+        return nodes[i].kind == NodeKind::dirichlet_matrix ||
+               nodes[i].kind == NodeKind::dirichlet_fracture;
+      }
+
+      std::vector<Node>       nodes;
+      std::vector<Connection> connections;
+      unsigned int            n_matrix_cells;
+      unsigned int            n_fracture_cells;
+      unsigned int            n_interfaces;
+      unsigned int            n_intersections;
+      /// Number of matrix connections whose centre lies on the wrong side of the face.
+      unsigned int            n_non_admissible;
+
+      /// Per-cell inputs: porosity and isotropic permeability (m^2) of matrix cells, aperture d_f
+      /// (m) of fracture cells, normal transmissibility Lambda_f (m).
+      std::vector<double> porosity;
+      std::vector<double> permeability;
+      std::vector<double> aperture;
+      double              normal_transmissibility = 1.;
+    };
+  } // namespace flow
+} // namespace porofrac
+
+#endif

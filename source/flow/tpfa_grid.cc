@@ -1,0 +1,318 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/numbers.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/flow/tpfa_grid.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace porofrac
+{
+  namespace flow
+  {
+    namespace
+    {
+      /// Circumcentre of a simplex: 2 (v_i - v_0) . x = |v_i|^2 - |v_0|^2.
+      template <int dim, typename Cell>
+      Point<dim>
+      circumcentre(const Cell &cell)
+      {
+        FullMatrix<double> A(dim, dim);
+        Vector<double>     rhs(dim), x(dim);
+        const Point<dim>   v0 = cell->vertex(0);
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            const Point<dim> vi = cell->vertex(i + 1);
+            for (unsigned int d = 0; d < dim; ++d)
+              A(i, d) = 2. * (vi[d] - v0[d]);
+            rhs(i) = vi.norm_square() - v0.norm_square();
+          }
+        A.gauss_jordan();
+        A.vmult(x, rhs);
+        Point<dim> c;
+        for (unsigned int d = 0; d < dim; ++d)
+          c[d] = x(d);
+        return c;
+      }
+
+      template <int dim, typename Cell>
+      double
+      simplex_measure(const Cell &cell)
+      {
+        const Tensor<1, dim> a = cell->vertex(1) - cell->vertex(0);
+        const Tensor<1, dim> b = cell->vertex(2) - cell->vertex(0);
+        if constexpr (dim == 2)
+          return 0.5 * std::abs(a[0] * b[1] - a[1] * b[0]);
+        else
+          {
+            const Tensor<1, dim> c = cell->vertex(3) - cell->vertex(0);
+            return std::abs(cross_product_3d(a, b) * c) / 6.;
+          }
+      }
+
+      /// Face measure, centroid and unit normal (orientation arbitrary).
+      template <int dim, typename Face>
+      void
+      face_geometry(const Face &face, double &measure, Point<dim> &centre, Tensor<1, dim> &normal)
+      {
+        centre = Point<dim>();
+        for (unsigned int v = 0; v < dim; ++v)
+          centre += face->vertex(v) / double(dim);
+        const Tensor<1, dim> a = face->vertex(1) - face->vertex(0);
+        if constexpr (dim == 2)
+          {
+            measure   = a.norm();
+            normal[0] = -a[1] / measure;
+            normal[1] = a[0] / measure;
+          }
+        else
+          {
+            const Tensor<1, dim> n = cross_product_3d(a, face->vertex(2) - face->vertex(0));
+            measure                = 0.5 * n.norm();
+            normal                 = n / n.norm();
+          }
+      }
+
+      template <int dim>
+      double
+      weight(const bool axisymmetric, const Point<dim> &x)
+      {
+        return axisymmetric ? 2. * numbers::PI * x[1] : 1.;
+      }
+    } // namespace
+
+    template <int dim>
+    TpfaGrid<dim>::TpfaGrid(const geometry::CutMesh<dim>       &mesh,
+                            const bool                          axisymmetric,
+                            const std::set<types::boundary_id> &matrix_dirichlet_ids,
+                            const std::set<types::boundary_id> &fracture_dirichlet_ids)
+    {
+      const auto &tria = mesh.triangulation;
+      n_matrix_cells   = tria.n_active_cells();
+      n_fracture_cells = mesh.fracture_faces.size();
+      n_interfaces     = 2 * n_fracture_cells;
+      n_intersections  = 0;
+      n_non_admissible = 0;
+
+      nodes.resize(n_matrix_cells + n_fracture_cells + n_interfaces);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          Node &node   = nodes[cell->active_cell_index()];
+          node.kind    = NodeKind::matrix;
+          node.rock    = matrix_rock;
+          node.centre  = circumcentre<dim>(cell);
+          Point<dim> centroid;
+          for (unsigned int v = 0; v < dim + 1; ++v)
+            centroid += cell->vertex(v) / double(dim + 1);
+          node.measure = simplex_measure<dim>(cell) * weight(axisymmetric, centroid);
+        }
+      for (unsigned int s = 0; s < n_fracture_cells; ++s)
+        {
+          const auto &face = mesh.fracture_faces[s];
+          Node       &node = nodes[n_matrix_cells + s];
+          node.kind        = NodeKind::fracture;
+          node.rock        = fracture_rock;
+          node.centre      = face.centre;
+          node.measure     = face.measure * weight(axisymmetric, face.centre);
+          for (unsigned int side = 0; side < 2; ++side)
+            {
+              Node &inode   = nodes[n_matrix_cells + n_fracture_cells + 2 * s + side];
+              inode.kind    = NodeKind::interface;
+              inode.rock    = fracture_rock;
+              inode.centre  = face.centre;
+              inode.measure = 0;
+            }
+        }
+
+      // Matrix connections.
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const unsigned int K = cell->active_cell_index();
+          for (const unsigned int f : cell->face_indices())
+            {
+              double         measure;
+              Point<dim>     centre;
+              Tensor<1, dim> normal;
+              face_geometry<dim>(cell->face(f), measure, centre, normal);
+              // Outward normal of K: the opposite vertex lies inside.
+              Point<dim> inner;
+              for (unsigned int v = 0; v < dim + 1; ++v)
+                inner += cell->vertex(v) / double(dim + 1);
+              if ((centre - inner) * normal < 0)
+                normal = -normal;
+              const double d_K  = (centre - nodes[K].centre) * normal; // signed
+              const double area = measure * weight(axisymmetric, centre);
+              if (d_K <= 0)
+                ++n_non_admissible;
+              const double d_K_pos = std::max(d_K, 1e-3 * cell->diameter());
+
+              if (!cell->at_boundary(f))
+                {
+                  const unsigned int L = cell->neighbor(f)->active_cell_index();
+                  if (K < L)
+                    {
+                      const double d_L = (nodes[L].centre - centre) * normal;
+                      connections.push_back({ConnectionKind::matrix_matrix, K, L, matrix_rock,
+                                             matrix_rock, area, d_K, d_L});
+                    }
+                  continue;
+                }
+              const auto ff = mesh.fracture_face(cell, f);
+              if (ff.first != numbers::invalid_unsigned_int)
+                {
+                  const unsigned int I = n_matrix_cells + n_fracture_cells + 2 * ff.first + ff.second;
+                  connections.push_back({ConnectionKind::matrix_interface, K, I, matrix_rock,
+                                         matrix_rock, area, d_K_pos, 0.});
+                  continue;
+                }
+              const types::boundary_id id = cell->face(f)->boundary_id();
+              if (matrix_dirichlet_ids.count(id))
+                {
+                  Node node;
+                  node.kind        = NodeKind::dirichlet_matrix;
+                  node.rock        = matrix_rock;
+                  node.measure     = 0;
+                  node.centre      = centre;
+                  node.boundary_id = id;
+                  nodes.push_back(node);
+                  connections.push_back({ConnectionKind::matrix_boundary, K,
+                                         static_cast<unsigned int>(nodes.size() - 1), matrix_rock,
+                                         matrix_rock, area, d_K_pos, 0.});
+                }
+            }
+        }
+
+      // Interface-fracture connections (eq. (3); the interface carries rock type a = fracture).
+      for (unsigned int s = 0; s < n_fracture_cells; ++s)
+        for (unsigned int side = 0; side < 2; ++side)
+          connections.push_back({ConnectionKind::interface_fracture,
+                                 n_matrix_cells + n_fracture_cells + 2 * s + side,
+                                 n_matrix_cells + s, fracture_rock, fracture_rock,
+                                 mesh.fracture_faces[s].measure *
+                                   weight(axisymmetric, mesh.fracture_faces[s].centre),
+                                 0., 0.});
+
+      // Fracture-fracture connections through fracture nodes (2D).
+      if (dim == 2)
+        {
+          std::map<unsigned int, types::boundary_id> vertex_boundary_id;
+          for (const auto &cell : tria.active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->at_boundary(f) &&
+                  cell->face(f)->boundary_id() < geometry::first_fracture_boundary_id)
+                for (unsigned int v = 0; v < dim; ++v)
+                  vertex_boundary_id[cell->face(f)->vertex_index(v)] = cell->face(f)->boundary_id();
+
+          for (const auto &fnode : mesh.fracture_nodes)
+            {
+              const unsigned int n_faces = fnode.faces.size();
+              const double       w       = weight(axisymmetric, fnode.location);
+              types::boundary_id id      = numbers::invalid_boundary_id;
+              if (fnode.on_boundary)
+                for (const unsigned int c : fnode.copies)
+                  if (vertex_boundary_id.count(c))
+                    id = vertex_boundary_id[c];
+              const bool dirichlet = fnode.on_boundary && fracture_dirichlet_ids.count(id);
+              if (dirichlet || n_faces >= 3)
+                {
+                  Node node;
+                  node.kind        = dirichlet ? NodeKind::dirichlet_fracture : NodeKind::intersection;
+                  node.rock        = fracture_rock;
+                  node.measure     = 0;
+                  node.centre      = fnode.location;
+                  node.boundary_id = id;
+                  nodes.push_back(node);
+                  if (!dirichlet)
+                    ++n_intersections;
+                  for (const unsigned int s : fnode.faces)
+                    connections.push_back(
+                      {ConnectionKind::fracture_node, n_matrix_cells + s,
+                       static_cast<unsigned int>(nodes.size() - 1), fracture_rock, fracture_rock, w,
+                       (mesh.fracture_faces[s].centre - fnode.location).norm(), 0.});
+                }
+              else if (n_faces == 2)
+                {
+                  const unsigned int s0 = fnode.faces[0], s1 = fnode.faces[1];
+                  connections.push_back(
+                    {ConnectionKind::fracture_fracture, n_matrix_cells + s0, n_matrix_cells + s1,
+                     fracture_rock, fracture_rock, w,
+                     (mesh.fracture_faces[s0].centre - fnode.location).norm(),
+                     (mesh.fracture_faces[s1].centre - fnode.location).norm()});
+                }
+              // one face: a tip, no flux
+            }
+        }
+
+      porosity.assign(n_matrix_cells, 0.1);
+      permeability.assign(n_matrix_cells, 1.);
+      aperture.assign(n_fracture_cells, 1e-3);
+    }
+
+    template <int dim>
+    void
+    TpfaGrid<dim>::update_transmissibilities()
+    {
+      check_input(normal_transmissibility > 0, "Flow/Fracture/Normal transmissibility",
+                  "must be positive");
+      for (const double k : permeability)
+        check_input(k > 0 && std::isfinite(k), "Flow/Matrix/Permeability", "must be positive");
+      for (const double d : aperture)
+        check_input(d > 0 && std::isfinite(d), "Flow/Fracture/Aperture", "must be positive");
+      for (const double p : porosity)
+        check_input(p > 0 && p < 1, "Flow/Matrix/Porosity", "must lie in (0, 1)");
+      const auto conductivity = [this](const unsigned int node) {
+        const double d = aperture[node - n_matrix_cells];
+        return d * d * d / 12.;
+      };
+      for (auto &c : connections)
+        switch (c.kind)
+          {
+            case ConnectionKind::matrix_matrix:
+              c.transmissibility =
+                c.area / (c.d_a / permeability[c.a] + c.d_b / permeability[c.b]);
+              break;
+            case ConnectionKind::matrix_boundary:
+            case ConnectionKind::matrix_interface:
+              c.transmissibility = c.area * permeability[c.a] / c.d_a;
+              break;
+            case ConnectionKind::interface_fracture:
+              c.transmissibility = c.area * normal_transmissibility;
+              break;
+            case ConnectionKind::fracture_fracture:
+              c.transmissibility =
+                c.area / (c.d_a / conductivity(c.a) + c.d_b / conductivity(c.b));
+              break;
+            case ConnectionKind::fracture_node:
+              c.transmissibility = c.area * conductivity(c.a) / c.d_a;
+              break;
+          }
+      for (const auto &c : connections)
+        if (!(c.transmissibility > 0) || !std::isfinite(c.transmissibility))
+          {
+            std::ostringstream s;
+            s << "a transmissibility is not positive (" << c.transmissibility
+              << ") between flow nodes at " << nodes[c.a].centre << " and " << nodes[c.b].centre
+              << ": the mesh is not TPFA-admissible there";
+            throw InputError("Geometry/Mesh size", s.str());
+          }
+    }
+
+    template <int dim>
+    double
+    TpfaGrid<dim>::pore_volume(const unsigned int i) const
+    {
+      if (i < n_matrix_cells)
+        return nodes[i].measure * porosity[i];
+      if (i < n_matrix_cells + n_fracture_cells)
+        return nodes[i].measure * aperture[i - n_matrix_cells];
+      return 0.;
+    }
+
+    template class TpfaGrid<2>;
+    template class TpfaGrid<3>;
+  } // namespace flow
+} // namespace porofrac
