@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/coupling/newton_krylov.h>
+
+#include <cmath>
+#include <limits>
+
+namespace porofrac
+{
+  namespace coupling
+  {
+    void
+    FixedPointParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Coupling");
+      prm.declare_entry("Method", "newton-krylov", Patterns::Selection("newton-krylov|fixed point"),
+                        "How each time step's fixed point is solved: Jacobian-free Newton-Krylov "
+                        "acceleration (paper, Section 5) or plain fixed-point iterations.");
+      prm.declare_entry("Tolerance", "1e-6", Patterns::Double(0),
+                        "Stop at this relative increment or relative residual (paper: 1e-6).");
+      prm.declare_entry("Max iterations", "30", Patterns::Integer(1),
+                        "Newton (or fixed-point) iterations before the time step is cut.");
+      prm.declare_entry("GMRES restart", "30", Patterns::Integer(1),
+                        "Krylov space size of GMRES in each Newton step.");
+      prm.declare_entry("Max GMRES iterations", "30", Patterns::Integer(1),
+                        "GMRES iterations per Newton step (each costs one coupled map evaluation).");
+      prm.declare_entry("Forcing term max", "0.1", Patterns::Double(0, 1),
+                        "Upper bound of the Eisenstat-Walker relative GMRES tolerance.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    FixedPointParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Coupling");
+      method               = prm.get("Method");
+      tolerance            = prm.get_double("Tolerance");
+      max_iterations       = prm.get_integer("Max iterations");
+      gmres_restart        = prm.get_integer("GMRES restart");
+      max_gmres_iterations = prm.get_integer("Max GMRES iterations");
+      eta_max              = prm.get_double("Forcing term max");
+      prm.leave_subsection();
+      check_input(tolerance > 0, "Coupling/Tolerance", "must be positive");
+    }
+
+
+
+    FixedPointSolver::FixedPointSolver(const FixedPointParameters &parameters)
+      : parameters(parameters)
+    {}
+
+
+
+    FixedPointResult
+    FixedPointSolver::solve(const Map &g, Vector<double> &x) const
+    {
+      return parameters.method == "fixed point" ? solve_plain(g, x) : solve_newton_krylov(g, x);
+    }
+
+
+
+    FixedPointResult
+    FixedPointSolver::solve_plain(const Map &g, Vector<double> &x) const
+    {
+      FixedPointResult result;
+      Vector<double>   gx(x.size());
+      double           r0 = 0;
+      for (result.iterations = 1; result.iterations <= parameters.max_iterations;
+           ++result.iterations)
+        {
+          g(x, gx);
+          ++result.map_evaluations;
+          gx -= x; // now g(x) - x = -R(x) = the increment
+          const double r = gx.l2_norm();
+          if (result.iterations == 1)
+            r0 = r;
+          result.residual_history.push_back(r);
+          result.relative_residual  = r0 > 0 ? r / r0 : 0.;
+          result.relative_increment = r / std::max(x.l2_norm(), std::numeric_limits<double>::min());
+          x += gx;
+          if (r == 0 || result.relative_increment <= parameters.tolerance ||
+              (result.iterations > 1 && result.relative_residual <= parameters.tolerance))
+            {
+              result.converged = true;
+              return result;
+            }
+        }
+      result.iterations = parameters.max_iterations;
+      return result;
+    }
+
+
+
+    namespace
+    {
+      /// The Jacobian-free operator v -> (I - g'(x)) v by a forward difference around x.
+      class FiniteDifferenceOperator
+      {
+      public:
+        FiniteDifferenceOperator(const FixedPointSolver::Map &g,
+                                 const Vector<double>        &x,
+                                 const Vector<double>        &gx,
+                                 unsigned int                &evaluations)
+          : g(g)
+          , x(x)
+          , gx(gx)
+          , evaluations(evaluations)
+          , shifted(x.size())
+          , g_shifted(x.size())
+        {}
+
+        void
+        vmult(Vector<double> &dst, const Vector<double> &v) const
+        {
+          const double v_norm = v.l2_norm();
+          if (v_norm == 0)
+            {
+              dst = 0;
+              return;
+            }
+          const double eps = std::sqrt(std::numeric_limits<double>::epsilon()) *
+                             (1 + x.l2_norm()) / v_norm;
+          shifted = x;
+          shifted.add(eps, v);
+          g(shifted, g_shifted);
+          ++evaluations;
+          // dst = v - (g(x + eps v) - g(x)) / eps
+          dst = v;
+          dst.add(-1. / eps, g_shifted, 1. / eps, gx);
+        }
+
+      private:
+        const FixedPointSolver::Map &g;
+        const Vector<double>        &x;
+        const Vector<double>        &gx;
+        unsigned int                &evaluations;
+        mutable Vector<double>       shifted, g_shifted;
+      };
+    } // namespace
+
+
+
+    FixedPointResult
+    FixedPointSolver::solve_newton_krylov(const Map &g, Vector<double> &x) const
+    {
+      FixedPointResult result;
+      Vector<double>   gx(x.size()), minus_residual(x.size()), dx(x.size());
+      double           r0 = 0, r_previous = 0, eta = parameters.eta_max;
+      for (result.iterations = 0; result.iterations < parameters.max_iterations;
+           ++result.iterations)
+        {
+          g(x, gx);
+          ++result.map_evaluations;
+          minus_residual = gx;
+          minus_residual -= x; // -R(x) = g(x) - x
+          const double r = minus_residual.l2_norm();
+          if (result.iterations == 0)
+            r0 = r;
+          result.residual_history.push_back(r);
+          result.relative_residual = r0 > 0 ? r / r0 : 0.;
+          if (r == 0 || (result.iterations > 0 && result.relative_residual <= parameters.tolerance))
+            {
+              result.converged = true;
+              return result;
+            }
+
+          // Eisenstat-Walker choice 2 with the usual safeguard.
+          if (result.iterations > 0)
+            {
+              const double eta_new = parameters.ew_gamma * std::pow(r / r_previous, parameters.ew_alpha);
+              const double floor   = parameters.ew_gamma * std::pow(eta, parameters.ew_alpha);
+              eta = std::min(parameters.eta_max, floor > 0.1 ? std::max(eta_new, floor) : eta_new);
+            }
+          r_previous = r;
+
+          FiniteDifferenceOperator op(g, x, gx, result.map_evaluations);
+          SolverControl            control(parameters.max_gmres_iterations,
+                                std::max(eta * r, 1e-300), false, false);
+          SolverGMRES<Vector<double>>::AdditionalData data(parameters.gmres_restart + 2);
+          SolverGMRES<Vector<double>> gmres(control, data);
+          dx = 0;
+          try
+            {
+              gmres.solve(op, dx, minus_residual, PreconditionIdentity());
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              // Inexact Newton: use the best Krylov iterate reached.
+            }
+          result.gmres_iterations += control.last_step();
+          x += dx;
+          result.relative_increment =
+            dx.l2_norm() / std::max(x.l2_norm(), std::numeric_limits<double>::min());
+          if (result.relative_increment <= parameters.tolerance)
+            {
+              result.converged = true;
+              ++result.iterations;
+              return result;
+            }
+        }
+      return result;
+    }
+  } // namespace coupling
+} // namespace porofrac
