@@ -367,6 +367,8 @@ namespace porofrac
         }
       for (unsigned int r = 0; r < prm.global_refinements; ++r)
         raw.refine_uniformly();
+      if (prm.delaunay_flips)
+        raw.make_delaunay();
       return std::make_unique<CutMesh<dim>>(raw);
     }
 

@@ -46,6 +46,11 @@ namespace porofrac
       prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
                         "Uniform refinements of the generated mesh (each splits every triangle "
                         "into four and every fracture face into two).");
+      prm.declare_entry("Delaunay flips", "false", Patterns::Bool(),
+                        "Flip edges (never fracture, boundary or material-interface edges) after "
+                        "meshing and refinement until the mesh is Delaunay: TPFA with circumcentres "
+                        "then has no connection of non-positive distance. Refined meshes are no "
+                        "longer nested; keep false for convergence studies of the mechanics.");
       prm.declare_entry("Mesh algorithm", "delaunay", Patterns::Selection("delaunay|frontal-delaunay"),
                         "gmsh 2D meshing algorithm; Delaunay meshes suit TPFA best.");
       prm.leave_subsection();
@@ -71,6 +76,7 @@ namespace porofrac
       size_expression     = prm.get("Mesh size expression");
       refinement_regions  = prm.get("Refinement regions");
       global_refinements  = prm.get_integer("Global refinements");
+      delaunay_flips      = prm.get_bool("Delaunay flips");
       algorithm           = prm.get("Mesh algorithm");
       prm.leave_subsection();
     }

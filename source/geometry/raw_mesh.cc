@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace porofrac
 {
@@ -94,6 +95,84 @@ namespace porofrac
           split(boundary_faces);
           split(fracture_faces);
         }
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    RawMesh<dim>::make_delaunay()
+    {
+      AssertThrow(dim == 2, ExcMessage("Delaunay flips are implemented in 2D only."));
+      if constexpr (dim == 2)
+        {
+          orient_cells();
+          std::set<std::pair<unsigned int, unsigned int>> constrained;
+          auto key = [](unsigned int a, unsigned int b) {
+            return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+          };
+          for (const auto *faces : {&boundary_faces, &fracture_faces})
+            for (const auto &f : *faces)
+              constrained.insert(key(f.vertices[0], f.vertices[1]));
+
+          // d strictly inside the circumcircle of the counter-clockwise triangle (a, b, c)?
+          auto in_circle = [&](unsigned int a, unsigned int b, unsigned int c, unsigned int d) {
+            const Tensor<1, 2> A = vertices[a] - vertices[d], B = vertices[b] - vertices[d],
+                               C = vertices[c] - vertices[d];
+            const double det = A.norm_square() * (B[0] * C[1] - B[1] * C[0]) -
+                               B.norm_square() * (A[0] * C[1] - A[1] * C[0]) +
+                               C.norm_square() * (A[0] * B[1] - A[1] * B[0]);
+            const double scale = A.norm_square() * B.norm_square() + B.norm_square() * C.norm_square() +
+                                 C.norm_square() * A.norm_square();
+            return det > 1e-10 * scale; // cocircular quads (common after refinement) stay put
+          };
+
+          unsigned int total = 0;
+          for (unsigned int pass = 0; pass < 100; ++pass)
+            {
+              std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>> cells_of_edge;
+              for (unsigned int c = 0; c < cells.size(); ++c)
+                for (unsigned int i = 0; i < 3; ++i)
+                  cells_of_edge[key(cells[c][i], cells[c][(i + 1) % 3])].push_back(c);
+              std::vector<bool> touched(cells.size(), false);
+              unsigned int      flips = 0;
+              for (const auto &[edge, two] : cells_of_edge)
+                {
+                  if (two.size() != 2 || constrained.count(edge) || touched[two[0]] ||
+                      touched[two[1]] ||
+                      (!cell_material.empty() && cell_material[two[0]] != cell_material[two[1]]))
+                    continue;
+                  // Rotate t1 to (a, b, c) with edge (a, b); t2 is then (b, a, d).
+                  auto t1 = cells[two[0]];
+                  while (key(t1[0], t1[1]) != edge)
+                    std::rotate(t1.begin(), t1.begin() + 1, t1.end());
+                  const unsigned int a = t1[0], b = t1[1], c = t1[2];
+                  unsigned int       d = 0;
+                  for (const unsigned int v : cells[two[1]])
+                    if (v != a && v != b)
+                      d = v;
+                  if (!in_circle(a, b, c, d))
+                    continue;
+                  cells[two[0]] = {{a, d, c}};
+                  cells[two[1]] = {{b, c, d}};
+                  // A non-convex quadrilateral cannot violate Delaunay, but guard anyway.
+                  if (signed_measure<2>(vertices, cells[two[0]]) <= 0 ||
+                      signed_measure<2>(vertices, cells[two[1]]) <= 0)
+                    {
+                      cells[two[0]] = t1;
+                      cells[two[1]] = {{b, a, d}};
+                      continue;
+                    }
+                  touched[two[0]] = touched[two[1]] = true;
+                  ++flips;
+                }
+              total += flips;
+              if (flips == 0)
+                break;
+            }
+          return total;
+        }
+      return 0;
     }
 
 

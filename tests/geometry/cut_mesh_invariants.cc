@@ -66,6 +66,7 @@ namespace
     prm.transition_distance = 0.2;
     prm.global_refinements  = refinements;
     prm.algorithm           = "delaunay";
+    prm.delaunay_flips      = false;
     const auto  mesh_ptr    = make_cut_mesh<2>(prm);
     const auto &mesh        = *mesh_ptr;
     const auto &tria        = mesh.triangulation;
@@ -163,6 +164,7 @@ namespace
     prm.transition_distance = 0.2;
     prm.global_refinements  = 1;
     prm.algorithm           = "delaunay";
+    prm.delaunay_flips      = false;
     const auto mesh         = make_cut_mesh<2>(prm);
 
     FE_SimplexP<2>  fe(2);

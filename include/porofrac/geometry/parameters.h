@@ -33,6 +33,7 @@ namespace porofrac
       std::string size_expression;     ///< optional gmsh MathEval size field in x, y, z
       std::string refinement_regions;  ///< "(x0, y0) (x1, y1): h; ..."
       unsigned int global_refinements;
+      bool         delaunay_flips; ///< restore the Delaunay property after meshing/refinement
       std::string  algorithm; ///< delaunay | frontal-delaunay
     };
   } // namespace geometry

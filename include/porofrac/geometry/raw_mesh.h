@@ -51,6 +51,14 @@ namespace porofrac
       void
       refine_uniformly();
 
+      /**
+       * Lawson edge flips (2D) until every edge that is not on the boundary, on a fracture or
+       * between two materials satisfies the Delaunay condition: makes TPFA with circumcentres
+       * admissible again after red refinement. Returns the number of flips.
+       */
+      unsigned int
+      make_delaunay();
+
       /// Total measure (area in 2D) of the cells.
       double
       measure() const;
