@@ -48,22 +48,11 @@ namespace porofrac
         std::vector<double>      coords, parametric;
         gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, true, false);
         std::map<std::size_t, unsigned int> index_of_tag;
-        auto vertex = [&](const std::size_t tag) {
-          const auto it = index_of_tag.find(tag);
-          if (it != index_of_tag.end())
-            return it->second;
-          const auto   pos = std::find(node_tags.begin(), node_tags.end(), tag) - node_tags.begin();
-          Point<dim>   p;
-          for (unsigned int d = 0; d < dim; ++d)
-            p[d] = coords[3 * pos + d];
-          raw.vertices.push_back(p);
-          return index_of_tag[tag] = raw.vertices.size() - 1;
-        };
-        // Fast path for the common contiguous case.
+        // gmsh node tags need not be contiguous: map them to our vertex indices on first use.
         std::map<std::size_t, std::size_t> position;
         for (std::size_t i = 0; i < node_tags.size(); ++i)
           position[node_tags[i]] = i;
-        auto vertex_fast = [&](const std::size_t tag) {
+        auto vertex = [&](const std::size_t tag) {
           const auto it = index_of_tag.find(tag);
           if (it != index_of_tag.end())
             return it->second;
@@ -74,7 +63,6 @@ namespace porofrac
           raw.vertices.push_back(p);
           return index_of_tag[tag] = raw.vertices.size() - 1;
         };
-        (void)vertex;
 
         // Material ids from full-dimensional physical groups (0 without any).
         std::map<int, types::material_id> material_of_entity;
@@ -98,7 +86,7 @@ namespace porofrac
               {
                 std::array<unsigned int, dim + 1> cell;
                 for (unsigned int i = 0; i < dim + 1; ++i)
-                  cell[i] = vertex_fast(element_nodes[(dim + 1) * e + i]);
+                  cell[i] = vertex(element_nodes[(dim + 1) * e + i]);
                 raw.cells.push_back(cell);
                 raw.cell_material.push_back(material);
               }
@@ -127,7 +115,7 @@ namespace porofrac
                   {
                     typename RawMesh<dim>::TaggedFace face;
                     for (unsigned int i = 0; i < dim; ++i)
-                      face.vertices[i] = vertex_fast(element_nodes[dim * e + i]);
+                      face.vertices[i] = vertex(element_nodes[dim * e + i]);
                     if (is_fracture)
                       {
                         face.tag = std::stoul(match[1]);
