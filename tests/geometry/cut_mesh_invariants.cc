@@ -9,6 +9,9 @@
 // - side regions: a vertex is shared at interior tips and duplicated once per side region
 //   elsewhere (2 inside a fracture or at a corner, 4 at an X, 3 at a T, k+1 where k fracture faces
 //   reach the outer boundary);
+// - the fracture-face table: n+ points out of the plus cell and is the left normal of the
+//   tangent, abscissae are continuous along each fracture, tips lie half a face from the nearest
+//   face centre (none for a fracture through the domain);
 // - a P2 field that jumps across a fracture keeps its jump exactly.
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_simplex_p.h>
@@ -20,7 +23,9 @@
 #include <porofrac/geometry/fracture_network.h>
 #include <porofrac/geometry/mesh_generator.h>
 
+#include <cmath>
 #include <iomanip>
+#include <limits>
 #include <iostream>
 #include <map>
 
@@ -129,6 +134,33 @@ namespace
       }
     std::cout << "  fracture sides with exactly one partner: " << exactly_one << " of "
               << side_faces.size() << std::endl;
+
+    // The fracture-face table: n+ points out of the plus cell, n+ = (-t_y, t_x), abscissae
+    // continue from face to face along each fracture, tips are as far as the geometry says.
+    unsigned int bad_sides = 0, bad_frames = 0, bad_abscissae = 0;
+    double       nearest_tip = std::numeric_limits<double>::infinity();
+    for (const auto &f : mesh.fracture_faces)
+      {
+        bad_sides += ((f.cell[plus]->center() - f.centre) * f.normal >= 0) ||
+                     ((f.cell[minus]->center() - f.centre) * f.normal <= 0);
+        bad_frames += std::abs(f.normal.norm() - 1) > 1e-12 || std::abs(f.normal[0] + f.tangent[1]) > 1e-12 ||
+                      std::abs(f.normal[1] - f.tangent[0]) > 1e-12;
+        nearest_tip = std::min(nearest_tip, f.distance_to_tip / f.measure);
+      }
+    for (const auto &[id, faces] : mesh.faces_of_fracture)
+      for (unsigned int k = 0; k < faces.size(); ++k)
+        {
+          const auto &f = mesh.fracture_faces[faces[k]];
+          const double expected_begin =
+            k == 0 ? 0. : mesh.fracture_faces[faces[k - 1]].abscissa_end;
+          bad_abscissae += std::abs(f.abscissa_begin - expected_begin) > 1e-12 ||
+                           std::abs(f.abscissa_end - f.abscissa_begin - f.measure) > 1e-12;
+        }
+    std::cout << "  faces with the plus cell on the wrong side: " << bad_sides
+              << ", with a wrong normal/tangent frame: " << bad_frames
+              << ", with discontinuous abscissae: " << bad_abscissae << std::endl
+              << "  smallest distance to a tip / face length: "
+              << (std::isfinite(nearest_tip) ? nearest_tip : -1.) << std::endl;
 
     std::map<std::string, unsigned int> n_type;
     unsigned int                        wrong_copies = 0;
