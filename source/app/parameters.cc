@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/parameters.h>
 #include <porofrac/geometry/parameters.h>
+#include <porofrac/flow/scene.h>
 
 namespace porofrac
 {
@@ -34,6 +35,7 @@ namespace porofrac
       geometry::GeometryParameters::declare_parameters(prm);
       // MECHANICS HOOK (declare)
       // FLOW HOOK (declare)
+      flow::declare_parameters(prm);
     }
   } // namespace app
 } // namespace porofrac

@@ -13,6 +13,7 @@
 #include <porofrac/io/run_context.h>
 // MECHANICS HOOK (include)
 // FLOW HOOK (include)
+#include <porofrac/flow/scene.h>
 
 #include <filesystem>
 #include <iostream>
@@ -84,7 +85,7 @@ namespace porofrac
       else if (physics == "two-phase flow")
         {
           // FLOW HOOK (run)
-          throw InputError("Physics", "'two-phase flow' is not available in this build yet");
+          flow::run_scene<dim>(prm, *mesh, context);
         }
       else if (physics == "poromechanics")
         throw InputError("Physics", "'poromechanics' is not available in this build yet");

@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/flow/two_phase_solver.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace porofrac
+{
+  namespace flow
+  {
+    template <int dim>
+    TwoPhaseSolver<dim>::TwoPhaseSolver(const TpfaGrid<dim>           &grid,
+                                        const std::array<RockType, 2> &rocks,
+                                        const NewtonParameters        &parameters)
+      : grid(grid)
+      , rocks(rocks)
+      , parameters(parameters)
+    {
+      node_dof.assign(grid.n_nodes(), numbers::invalid_unsigned_int);
+      n_free = 0;
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (!grid.is_dirichlet(i))
+          node_dof[i] = n_free++;
+      DynamicSparsityPattern dsp(2 * n_free, 2 * n_free);
+      for (unsigned int i = 0; i < n_free; ++i)
+        for (unsigned int p = 0; p < 2; ++p)
+          for (unsigned int q = 0; q < 2; ++q)
+            dsp.add(2 * i + p, 2 * i + q);
+      for (const auto &c : grid.connections)
+        if (node_dof[c.a] != numbers::invalid_unsigned_int &&
+            node_dof[c.b] != numbers::invalid_unsigned_int)
+          for (unsigned int p = 0; p < 2; ++p)
+            for (unsigned int q = 0; q < 2; ++q)
+              {
+                dsp.add(dof(c.a, p), dof(c.b, q));
+                dsp.add(dof(c.b, p), dof(c.a, q));
+              }
+      sparsity.copy_from(dsp);
+      mean_pore_volume = total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
+      jacobian.reinit(sparsity);
+      state.assign(grid.n_nodes(), {{0., 0.}});
+      old_state = state;
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::apply_dirichlet(State &s) const
+    {
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (grid.is_dirichlet(i))
+          {
+            const auto &table =
+              grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::dirichlet_matrix ? matrix_dirichlet :
+                                                                                fracture_dirichlet;
+            const auto it = table.find(grid.nodes[i].boundary_id);
+            Assert(it != table.end(), ExcInternalError());
+            s[i] = it->second;
+          }
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::flux(const typename TpfaGrid<dim>::Connection &c, const State &s,
+                              const unsigned int phase, std::array<double, 4> &derivative) const
+    {
+      const double       delta = s[c.a][phase] - s[c.b][phase];
+      const bool         up_a  = delta >= 0;
+      const unsigned int e     = up_a ? c.a : c.b;
+      const RockType    &rock  = rocks[up_a ? c.rock_a : c.rock_b];
+      const double       pc    = s[e][1] - s[e][0];
+      const double       S     = rock.saturation.saturation(pc);
+      const double       eta   = rock.mobility(phase, S);
+      const double deta_dpc = rock.mobility_derivative(phase, S) * slope(rock, pc);
+      const double T        = c.transmissibility;
+      derivative            = {{0., 0., 0., 0.}};
+      derivative[phase] += T * eta;
+      derivative[2 + phase] -= T * eta;
+      const unsigned int o = up_a ? 0 : 2;
+      derivative[o + 1] += T * delta * deta_dpc;
+      derivative[o + 0] -= T * delta * deta_dpc;
+      return T * eta * delta;
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::assemble(const State &s, const State &old, const double dt,
+                                  Vector<double> &residual, SparseMatrix<double> *J) const
+    {
+      residual.reinit(2 * n_free);
+      if (J)
+        *J = 0;
+      // Accumulation |K| phi (S^{n+1} - S^n) (scheme (11a)).
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        {
+          double PV = grid.pore_volume(i);
+          if (node_dof[i] == numbers::invalid_unsigned_int)
+            continue;
+          if (PV == 0)
+            {
+              // Massless node: with the entry slope active and p_c <= 0, a Jacobian-only
+              // virtual pore volume keeps the rows of an absent phase non-singular.
+              const double pc = s[i][1] - s[i][0];
+              if (!(J && parameters.entry_slope && entry_slope_active && pc <= 0))
+                continue;
+              const double dS  = slope(rocks[grid.nodes[i].rock], pc);
+              const double PVv = 1e-3 * mean_pore_volume;
+              J->add(dof(i, 1), dof(i, 1), PVv * dS);
+              J->add(dof(i, 1), dof(i, 0), -PVv * dS);
+              J->add(dof(i, 0), dof(i, 1), -PVv * dS);
+              J->add(dof(i, 0), dof(i, 0), PVv * dS);
+              continue;
+            }
+          const RockType &rock = rocks[grid.nodes[i].rock];
+          const double    pc   = s[i][1] - s[i][0];
+          const double    dS   = rock.saturation.saturation(pc) -
+                            rock.saturation.saturation(old[i][1] - old[i][0]);
+          const double dSdpc = slope(rock, pc);
+          // phase nw: +dS; phase w: -dS
+          residual(dof(i, 1)) += PV * dS;
+          residual(dof(i, 0)) -= PV * dS;
+          if (J)
+            {
+              J->add(dof(i, 1), dof(i, 1), PV * dSdpc);
+              J->add(dof(i, 1), dof(i, 0), -PV * dSdpc);
+              J->add(dof(i, 0), dof(i, 1), -PV * dSdpc);
+              J->add(dof(i, 0), dof(i, 0), PV * dSdpc);
+            }
+        }
+      // Fluxes.
+      std::array<double, 4> d;
+      for (const auto &c : grid.connections)
+        for (unsigned int phase = 0; phase < 2; ++phase)
+          {
+            const double F = dt * flux(c, s, phase, d);
+            const std::array<unsigned int, 2> rows = {{dof(c.a, phase), dof(c.b, phase)}};
+            const std::array<unsigned int, 4> cols = {
+              {dof(c.a, 0), dof(c.a, 1), dof(c.b, 0), dof(c.b, 1)}};
+            for (unsigned int r = 0; r < 2; ++r)
+              {
+                if (rows[r] == numbers::invalid_unsigned_int)
+                  continue;
+                const double sign = (r == 0 ? 1. : -1.);
+                residual(rows[r]) += sign * F;
+                if (J)
+                  for (unsigned int k = 0; k < 4; ++k)
+                    if (cols[k] != numbers::invalid_unsigned_int && d[k] != 0)
+                      J->add(rows[r], cols[k], sign * dt * d[k]);
+              }
+          }
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::slope(const RockType &rock, const double pc) const
+    {
+      // With entry_slope, the Jacobian uses the entry slope S'(0+) where p_c <= 0 (an inexact
+      // Newton that lets an absent phase enter); the residual is unchanged.
+      if (parameters.entry_slope && entry_slope_active && pc <= 0)
+        return rock.saturation.derivative(1e-12 * pressure_scale(
+                 &rock == &rocks[0] ? matrix_rock : fracture_rock));
+      return rock.saturation.derivative(pc);
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::pressure_scale(const Rock rock) const
+    {
+      const SaturationLaw &law = rocks[rock].saturation;
+      return law.type == SaturationLaw::Type::corey ? law.R : law.P_r;
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::total_pore_volume() const
+    {
+      double V = 0;
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        V += grid.pore_volume(i);
+      return V;
+    }
+
+    template <int dim>
+    std::array<double, 2>
+    TwoPhaseSolver<dim>::phase_volumes(const State &s) const
+    {
+      std::array<double, 2> m{{0., 0.}};
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (!grid.is_dirichlet(i))
+          {
+            const double S = saturation(s, i, grid.nodes[i].rock);
+            m[1] += grid.pore_volume(i) * S;
+            m[0] += grid.pore_volume(i) * (1. - S);
+          }
+      return m;
+    }
+
+    template <int dim>
+    std::array<double, 2>
+    TwoPhaseSolver<dim>::mass_defect(const State &s, const State &old, const double dt) const
+    {
+      const auto m_new = phase_volumes(s), m_old = phase_volumes(old);
+      std::array<double, 2> outflow{{0., 0.}};
+      std::array<double, 4> d;
+      for (const auto &c : grid.connections)
+        {
+          const bool da = grid.is_dirichlet(c.a), db = grid.is_dirichlet(c.b);
+          if (da == db)
+            continue;
+          for (unsigned int phase = 0; phase < 2; ++phase)
+            outflow[phase] += (db ? 1. : -1.) * dt * flux(c, s, phase, d);
+        }
+      const double V = total_pore_volume();
+      return {{std::abs(m_new[0] - m_old[0] + outflow[0]) / V,
+               std::abs(m_new[1] - m_old[1] + outflow[1]) / V}};
+    }
+
+    template <int dim>
+    StepResult
+    TwoPhaseSolver<dim>::solve_time_step(const double dt, ConditionalOStream &verbose)
+    {
+      StepResult     result;
+      Vector<double> residual, update(2 * n_free);
+      double         r0          = 0;
+      double         last_update = std::numeric_limits<double>::infinity();
+      apply_dirichlet(state);
+      for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
+        {
+          // Entry slope for the first iterations only, exact Jacobian afterwards.
+          entry_slope_active = it < parameters.entry_slope_iterations;
+          assemble(state, old_state, dt, residual, &jacobian);
+          entry_slope_active = false;
+          const double r = residual.l2_norm();
+          if (!std::isfinite(r))
+            return result;
+          if (it == 0)
+            r0 = r;
+          result.mass_defect = mass_defect(state, old_state, dt);
+          const bool mass_ok = result.mass_defect[0] < parameters.mass_tolerance &&
+                               result.mass_defect[1] < parameters.mass_tolerance;
+          verbose << "      Newton " << it << ": |R| = " << std::scientific << std::setprecision(3)
+                  << r << ", update " << last_update << ", mass defect "
+                  << std::max(result.mass_defect[0], result.mass_defect[1]) << std::defaultfloat
+                  << std::endl;
+          if (mass_ok && (r == 0 || r < parameters.residual_tolerance * r0 ||
+                          last_update < parameters.update_tolerance))
+            {
+              result.converged  = true;
+              result.iterations = it;
+              return result;
+            }
+          if (it == parameters.max_iterations)
+            break;
+          SparseDirectUMFPACK solver;
+          try
+            {
+              solver.initialize(jacobian);
+            }
+          catch (...)
+            {
+              return result;
+            }
+          update = residual;
+          solver.solve(update);
+          // Appleyard-type chop: the capillary pressure of a node changes by at most
+          // capillary_chop times the pressure scale of its saturation law per iteration.
+          double p_max = 0, du_max = 0;
+          for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+            if (!grid.is_dirichlet(i))
+              {
+                const double dpw  = -update(dof(i, 0));
+                double       dpc  = -update(dof(i, 1)) - dpw;
+                const double lim  = parameters.capillary_chop * pressure_scale(grid.nodes[i].rock);
+                if (lim > 0 && std::abs(dpc) > lim)
+                  dpc = dpc > 0 ? lim : -lim;
+                // Stop at the kink of S at p_c = 0 when leaving the two-phase region.
+                const double pc_old = state[i][1] - state[i][0];
+                if (parameters.kink_stop && pc_old > 0 && pc_old + dpc < 0)
+                  dpc = -pc_old;
+                // Entering: the entry-slope linearization is about p_c = 0, so a node with
+                // p_c < 0 that the Newton step pushes up starts from the kink.
+                if (parameters.entry_slope && pc_old < 0 && dpc > 0)
+                  dpc -= pc_old;
+                state[i][0] += dpw;
+                state[i][1] += dpw + dpc;
+                for (unsigned int phase = 0; phase < 2; ++phase)
+                  p_max = std::max(p_max, std::abs(state[i][phase]));
+                du_max = std::max({du_max, std::abs(dpw), std::abs(dpw + dpc)});
+              }
+          last_update = du_max / std::max(p_max, 1e-300);
+          if (!std::isfinite(last_update))
+            return result;
+          result.iterations = it + 1;
+        }
+      return result;
+    }
+
+    template class TwoPhaseSolver<2>;
+    template class TwoPhaseSolver<3>;
+  } // namespace flow
+} // namespace porofrac
