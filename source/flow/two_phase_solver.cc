@@ -203,7 +203,7 @@ namespace porofrac
     TwoPhaseSolver<dim>::mass_defect(const State &s, const State &old, const double dt) const
     {
       const auto m_new = phase_volumes(s), m_old = phase_volumes(old);
-      std::array<double, 2> outflow{{0., 0.}};
+      std::array<double, 2> outflow{{0., 0.}}, throughput{{0., 0.}};
       std::array<double, 4> d;
       for (const auto &c : grid.connections)
         {
@@ -211,11 +211,16 @@ namespace porofrac
           if (da == db)
             continue;
           for (unsigned int phase = 0; phase < 2; ++phase)
-            outflow[phase] += (db ? 1. : -1.) * dt * flux(c, s, phase, d);
+            {
+              const double F = (db ? 1. : -1.) * dt * flux(c, s, phase, d);
+              outflow[phase] += F;
+              throughput[phase] += std::abs(F);
+            }
         }
+      // Relative to the larger of the pore volume and the volume that crossed the boundary.
       const double V = total_pore_volume();
-      return {{std::abs(m_new[0] - m_old[0] + outflow[0]) / V,
-               std::abs(m_new[1] - m_old[1] + outflow[1]) / V}};
+      return {{std::abs(m_new[0] - m_old[0] + outflow[0]) / std::max(V, throughput[0]),
+               std::abs(m_new[1] - m_old[1] + outflow[1]) / std::max(V, throughput[1])}};
     }
 
     template <int dim>

@@ -110,8 +110,8 @@ namespace porofrac
       std::array<double, 2>
       phase_volumes(const State &state) const;
 
-      /// Per phase: |mass change + dt * net outflow into Dirichlet nodes| / total pore volume,
-      /// computed independently of the residual.
+      /// Per phase: |mass change + dt * net outflow into Dirichlet nodes| / max(total pore
+      /// volume, dt * sum of |boundary fluxes|), computed independently of the residual.
       std::array<double, 2>
       mass_defect(const State &state, const State &old, const double dt) const;
 

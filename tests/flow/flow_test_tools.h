@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Shared set-up for the flow unit tests: a gmsh cut mesh of the unit square with a network.
+#ifndef POROFRAC_TESTS_FLOW_TOOLS_H
+#define POROFRAC_TESTS_FLOW_TOOLS_H
+
+#include <porofrac/flow/laws.h>
+#include <porofrac/flow/tpfa_grid.h>
+#include <porofrac/flow/two_phase_solver.h>
+#include <porofrac/geometry/cut_mesh.h>
+#include <porofrac/geometry/mesh_generator.h>
+#include <porofrac/geometry/parameters.h>
+
+#include <memory>
+#include <string>
+
+namespace flow_test
+{
+  using namespace porofrac;
+
+  inline std::unique_ptr<geometry::CutMesh<2>>
+  unit_square(const std::string &fractures, const double h = 0.1, const double hf = 0.05,
+              const std::string &algorithm = "delaunay")
+  {
+    geometry::GeometryParameters prm;
+    prm.domain              = "box";
+    prm.box                 = "(0, 0) (1, 1)";
+    prm.fractures           = fractures;
+    prm.mesh_size           = h;
+    prm.fracture_mesh_size  = hf;
+    prm.transition_distance = 0.1;
+    prm.global_refinements  = 0;
+    prm.algorithm           = algorithm;
+    return geometry::make_cut_mesh<2>(prm);
+  }
+
+  /// Corey matrix (R = 1e4 Pa) and fracture (R = 1e3 Pa), linear k_r, mu_w = 1e-3, mu_nw = 1e-4.
+  inline std::array<flow::RockType, 2>
+  corey_rocks()
+  {
+    std::array<flow::RockType, 2> rocks;
+    rocks[0].saturation = flow::SaturationLaw::corey(1e4);
+    rocks[1].saturation = flow::SaturationLaw::corey(1e3);
+    for (auto &r : rocks)
+      {
+        r.relative_permeability = flow::RelativePermeability::linear();
+        r.viscosity[0]          = 1e-3;
+        r.viscosity[1]          = 1e-4;
+      }
+    return rocks;
+  }
+
+  inline void
+  set_data(flow::TpfaGrid<2> &grid)
+  {
+    grid.porosity.assign(grid.n_matrix_cells, 0.2);
+    grid.permeability.assign(grid.n_matrix_cells, 1e-12);
+    grid.aperture.assign(grid.n_fracture_cells, 1e-3);
+    grid.normal_transmissibility = 1e-10;
+    grid.update_transmissibilities();
+  }
+} // namespace flow_test
+
+#endif
