@@ -26,7 +26,7 @@ namespace porofrac
       {
         std::vector<unsigned int> parent;
         explicit UnionFind(const unsigned int n)
-          : parent(n)
+            : parent(n)
         {
           std::iota(parent.begin(), parent.end(), 0u);
         }
@@ -79,6 +79,225 @@ namespace porofrac
         else
           return 0.5 * cross_product_3d(v[f[1]] - v[f[0]], v[f[2]] - v[f[0]]).norm();
       }
+      /// The uncut mesh's adjacency, and the faces and vertices on fractures and the boundary.
+      template <int dim>
+      struct Topology
+      {
+        using FaceKey = std::array<unsigned int, dim>;
+        std::map<FaceKey, std::vector<unsigned int>> cells_of_face;
+        std::vector<std::vector<unsigned int>>       cells_of_vertex;
+        std::map<FaceKey, unsigned int>              fracture_face_of_key;
+        std::set<unsigned int>                       boundary_vertices;
+        std::set<unsigned int>                       fracture_vertices;
+      };
+
+
+
+      template <int dim>
+      Topology<dim>
+      build_topology(const RawMesh<dim> &raw)
+      {
+        using FaceKey   = std::array<unsigned int, dim>;
+        const auto   &V = raw.vertices;
+        Topology<dim> t;
+        auto         &cells_of_face        = t.cells_of_face;
+        auto         &cells_of_vertex      = t.cells_of_vertex;
+        auto         &fracture_face_of_key = t.fracture_face_of_key;
+        auto         &boundary_vertices    = t.boundary_vertices;
+        cells_of_vertex.resize(V.size());
+
+        for (unsigned int c = 0; c < raw.cells.size(); ++c)
+          {
+            for (unsigned int i = 0; i < dim + 1; ++i)
+              {
+                cells_of_face[sorted_face<dim>(face_opposite<dim>(raw.cells[c], i))].push_back(c);
+                cells_of_vertex[raw.cells[c][i]].push_back(c);
+              }
+          }
+        for (unsigned int k = 0; k < raw.fracture_faces.size(); ++k)
+          {
+            const FaceKey key = sorted_face<dim>(raw.fracture_faces[k].vertices);
+            const auto    it  = cells_of_face.find(key);
+            POROFRAC_CHECK_INPUT(
+              it != cells_of_face.end(),
+              InputError("Geometry",
+                         "a fracture face at " +
+                           io::to_text(face_centre<dim>(V, raw.fracture_faces[k].vertices)) +
+                           " is not a face of the mesh"));
+            POROFRAC_CHECK_INPUT(it->second.size() == 2,
+                                 InputError("Geometry",
+                                            "fracture " +
+                                              std::to_string(raw.fracture_faces[k].tag) +
+                                              " lies on the outer boundary at " +
+                                              io::to_text(face_centre<dim>(V, key))));
+            POROFRAC_CHECK_INPUT(fracture_face_of_key.emplace(key, k).second,
+                                 InputError("Geometry",
+                                            "two fractures overlap at " +
+                                              io::to_text(face_centre<dim>(V, key))));
+          }
+        for (const auto &f : raw.boundary_faces)
+          for (const unsigned int v : f.vertices)
+            boundary_vertices.insert(v);
+
+        for (const auto &f : raw.fracture_faces)
+          for (const unsigned int v : f.vertices)
+            t.fracture_vertices.insert(v);
+        return t;
+      }
+
+
+
+      /**
+       * The cut: around each fracture vertex, the cells connected through faces that are not
+       * fracture faces form a side region; each region gets its own copy of the vertex (an
+       * interior tip has one region, hence one shared vertex). Renumbers @p cells in place and
+       * appends the copies to @p vertices.
+       */
+      template <int dim>
+      std::map<unsigned int, std::vector<unsigned int>>
+      cut_along_fractures(const RawMesh<dim>                             &raw,
+                          const Topology<dim>                            &topology,
+                          std::vector<std::array<unsigned int, dim + 1>> &cut_cells,
+                          std::vector<Point<dim>>                        &cut_vertices)
+      {
+        using FaceKey                    = std::array<unsigned int, dim>;
+        const auto &V                    = raw.vertices;
+        const auto &cells_of_vertex      = topology.cells_of_vertex;
+        const auto &fracture_face_of_key = topology.fracture_face_of_key;
+        const auto &fracture_vertices    = topology.fracture_vertices;
+        std::map<unsigned int, std::vector<unsigned int>> copies_of_vertex;
+
+        for (const unsigned int v : fracture_vertices)
+          {
+            const auto                     &around = cells_of_vertex[v];
+            UnionFind                       regions(around.size());
+            std::map<FaceKey, unsigned int> first_cell_with_face;
+            for (unsigned int a = 0; a < around.size(); ++a)
+              {
+                const auto &cell = raw.cells[around[a]];
+                for (unsigned int i = 0; i < dim + 1; ++i)
+                  {
+                    if (cell[i] == v)
+                      continue; // the face opposite v does not contain v
+                    const FaceKey key = sorted_face<dim>(face_opposite<dim>(cell, i));
+                    if (fracture_face_of_key.count(key))
+                      continue;
+                    const auto it = first_cell_with_face.find(key);
+                    if (it == first_cell_with_face.end())
+                      first_cell_with_face[key] = a;
+                    else
+                      regions.unite(a, it->second);
+                  }
+              }
+            std::map<unsigned int, unsigned int> copy_of_region;
+            for (unsigned int a = 0; a < around.size(); ++a)
+              {
+                const unsigned int root = regions.find(a);
+                auto               it   = copy_of_region.find(root);
+                if (it == copy_of_region.end())
+                  {
+                    const unsigned int copy = copy_of_region.empty() ? v : cut_vertices.size();
+                    if (copy != v)
+                      cut_vertices.push_back(V[v]);
+                    it = copy_of_region.emplace(root, copy).first;
+                    copies_of_vertex[v].push_back(copy);
+                  }
+                for (auto &w : cut_cells[around[a]])
+                  if (w == v)
+                    w = it->second;
+              }
+          }
+
+        return copies_of_vertex;
+      }
+
+
+
+      /**
+       * Orders the faces of each fracture along its polyline (2D): for each raw fracture face,
+       * its (first, second) vertices in the direction of travel and the abscissa of the first.
+       * The start is the end nearest the deck's first point, else the lexicographically smallest.
+       */
+      template <int dim>
+      void
+      chain_fractures(const RawMesh<dim>                         &raw,
+                      std::vector<std::array<unsigned int, dim>> &oriented,
+                      std::vector<double>                        &s_begin,
+                      std::vector<unsigned int>                  &fracture_ids)
+      {
+        const auto &V = raw.vertices;
+        oriented.assign(raw.fracture_faces.size(), std::array<unsigned int, dim>());
+        s_begin.assign(raw.fracture_faces.size(), 0.);
+
+        std::map<unsigned int, std::vector<unsigned int>> raw_faces_of_fracture;
+        for (unsigned int k = 0; k < raw.fracture_faces.size(); ++k)
+          raw_faces_of_fracture[raw.fracture_faces[k].tag].push_back(k);
+
+        for (const auto &[fid, faces] : raw_faces_of_fracture)
+          {
+            fracture_ids.push_back(fid);
+            if constexpr (dim == 2)
+              {
+                std::map<unsigned int, std::vector<unsigned int>> faces_at;
+                for (const unsigned int k : faces)
+                  for (const unsigned int v : raw.fracture_faces[k].vertices)
+                    faces_at[v].push_back(k);
+                std::vector<unsigned int> ends;
+                for (const auto &[v, fs] : faces_at)
+                  {
+                    POROFRAC_CHECK_INPUT(fs.size() <= 2,
+                                         InputError("Geometry/Fractures",
+                                                    "fracture " + std::to_string(fid) +
+                                                      " branches or crosses itself at " +
+                                                      io::to_text(V[v])));
+                    if (fs.size() == 1)
+                      ends.push_back(v);
+                  }
+                POROFRAC_CHECK_INPUT(ends.size() == 2 || ends.empty(),
+                                     InputError("Geometry/Fractures",
+                                                "fracture " + std::to_string(fid) +
+                                                  " is not one connected polyline"));
+                unsigned int start = ends.empty() ? faces_at.begin()->first : ends[0];
+                const auto   hint  = raw.fracture_start.find(fid);
+                if (ends.size() == 2)
+                  {
+                    if (hint != raw.fracture_start.end())
+                      {
+                        if (V[ends[1]].distance(hint->second) < V[ends[0]].distance(hint->second))
+                          start = ends[1];
+                      }
+                    else if (V[ends[1]][0] < V[ends[0]][0] - 1e-12 ||
+                             (std::abs(V[ends[1]][0] - V[ends[0]][0]) <= 1e-12 &&
+                              V[ends[1]][1] < V[ends[0]][1]))
+                      start = ends[1];
+                  }
+                std::set<unsigned int> visited;
+                unsigned int           node = start;
+                double                 s    = 0;
+                while (visited.size() < faces.size())
+                  {
+                    unsigned int next_face = numbers::invalid_unsigned_int;
+                    for (const unsigned int k : faces_at[node])
+                      if (!visited.count(k))
+                        next_face = k;
+                    POROFRAC_CHECK_INPUT(next_face != numbers::invalid_unsigned_int,
+                                         InputError("Geometry/Fractures",
+                                                    "fracture " + std::to_string(fid) +
+                                                      " is not one connected polyline"));
+                    visited.insert(next_face);
+                    const auto        &fv    = raw.fracture_faces[next_face].vertices;
+                    const unsigned int other = (fv[0] == node) ? fv[1] : fv[0];
+                    oriented[next_face]      = {{node, other}};
+                    s_begin[next_face]       = s;
+                    s += V[node].distance(V[other]);
+                    node = other;
+                  }
+              }
+            else
+              for (const unsigned int k : faces)
+                oriented[k] = raw.fracture_faces[k].vertices;
+          }
+      }
     } // namespace
 
 
@@ -91,91 +310,15 @@ namespace porofrac
       n_uncut_vertices = raw.vertices.size();
       const auto &V    = raw.vertices;
 
-      // --- Uncut topology: face -> cells, vertex -> cells, fracture faces by key.
-      using FaceKey = std::array<unsigned int, dim>;
-      std::map<FaceKey, std::vector<unsigned int>> cells_of_face;
-      std::vector<std::vector<unsigned int>>        cells_of_vertex(V.size());
-      for (unsigned int c = 0; c < raw.cells.size(); ++c)
-        {
-          for (unsigned int i = 0; i < dim + 1; ++i)
-            {
-              cells_of_face[sorted_face<dim>(face_opposite<dim>(raw.cells[c], i))].push_back(c);
-              cells_of_vertex[raw.cells[c][i]].push_back(c);
-            }
-        }
-      std::map<FaceKey, unsigned int> fracture_face_of_key;
-      for (unsigned int k = 0; k < raw.fracture_faces.size(); ++k)
-        {
-          const FaceKey key = sorted_face<dim>(raw.fracture_faces[k].vertices);
-          const auto    it  = cells_of_face.find(key);
-          POROFRAC_CHECK_INPUT(it != cells_of_face.end(),
-                      InputError("Geometry",
-                                 "a fracture face at " +
-                                   io::to_text(face_centre<dim>(V, raw.fracture_faces[k].vertices)) +
-                                   " is not a face of the mesh"));
-          POROFRAC_CHECK_INPUT(it->second.size() == 2,
-                      InputError("Geometry",
-                                 "fracture " + std::to_string(raw.fracture_faces[k].tag) +
-                                   " lies on the outer boundary at " +
-                                   io::to_text(face_centre<dim>(V, key))));
-          POROFRAC_CHECK_INPUT(fracture_face_of_key.emplace(key, k).second,
-                      InputError("Geometry",
-                                 "two fractures overlap at " + io::to_text(face_centre<dim>(V, key))));
-        }
-      std::set<unsigned int> boundary_vertices;
-      for (const auto &f : raw.boundary_faces)
-        for (const unsigned int v : f.vertices)
-          boundary_vertices.insert(v);
+      const Topology<dim> topology          = build_topology<dim>(raw);
+      const auto         &cells_of_face     = topology.cells_of_face;
+      const auto         &boundary_vertices = topology.boundary_vertices;
+      const auto         &fracture_vertices = topology.fracture_vertices;
+      using FaceKey                         = std::array<unsigned int, dim>;
 
-      // --- Cut: around each fracture vertex, cells connected through non-fracture faces form a
-      // side region; each region gets its own copy of the vertex (an interior tip has one).
-      std::vector<std::array<unsigned int, dim + 1>> cut_cells = raw.cells;
-      std::vector<Point<dim>>                       cut_vertices = V;
-      std::map<unsigned int, std::vector<unsigned int>> copies_of_vertex;
-      std::set<unsigned int>                            fracture_vertices;
-      for (const auto &f : raw.fracture_faces)
-        for (const unsigned int v : f.vertices)
-          fracture_vertices.insert(v);
-      for (const unsigned int v : fracture_vertices)
-        {
-          const auto &around = cells_of_vertex[v];
-          UnionFind   regions(around.size());
-          std::map<FaceKey, unsigned int> first_cell_with_face;
-          for (unsigned int a = 0; a < around.size(); ++a)
-            {
-              const auto &cell = raw.cells[around[a]];
-              for (unsigned int i = 0; i < dim + 1; ++i)
-                {
-                  if (cell[i] == v)
-                    continue; // the face opposite v does not contain v
-                  const FaceKey key = sorted_face<dim>(face_opposite<dim>(cell, i));
-                  if (fracture_face_of_key.count(key))
-                    continue;
-                  const auto it = first_cell_with_face.find(key);
-                  if (it == first_cell_with_face.end())
-                    first_cell_with_face[key] = a;
-                  else
-                    regions.unite(a, it->second);
-                }
-            }
-          std::map<unsigned int, unsigned int> copy_of_region;
-          for (unsigned int a = 0; a < around.size(); ++a)
-            {
-              const unsigned int root = regions.find(a);
-              auto               it   = copy_of_region.find(root);
-              if (it == copy_of_region.end())
-                {
-                  const unsigned int copy = copy_of_region.empty() ? v : cut_vertices.size();
-                  if (copy != v)
-                    cut_vertices.push_back(V[v]);
-                  it = copy_of_region.emplace(root, copy).first;
-                  copies_of_vertex[v].push_back(copy);
-                }
-              for (auto &w : cut_cells[around[a]])
-                if (w == v)
-                  w = it->second;
-            }
-        }
+      std::vector<std::array<unsigned int, dim + 1>> cut_cells    = raw.cells;
+      std::vector<Point<dim>>                        cut_vertices = V;
+      auto copies_of_vertex = cut_along_fractures<dim>(raw, topology, cut_cells, cut_vertices);
 
       // Maps an uncut face of cell c to the cut vertex indices of that cell.
       auto cut_face = [&](const unsigned int c, const FaceKey &uncut) {
@@ -187,80 +330,12 @@ namespace porofrac
         return result;
       };
 
-      // --- Fracture chains (2D): abscissa and tangent direction.
-      std::map<unsigned int, std::vector<unsigned int>> raw_faces_of_fracture;
-      for (unsigned int k = 0; k < raw.fracture_faces.size(); ++k)
-        raw_faces_of_fracture[raw.fracture_faces[k].tag].push_back(k);
-
-      // Per raw fracture face: oriented (first, second) uncut vertex and abscissa of the first.
-      std::vector<std::array<unsigned int, dim>> oriented(raw.fracture_faces.size());
-      std::vector<double>                        s_begin(raw.fracture_faces.size(), 0.);
-      for (const auto &[fid, faces] : raw_faces_of_fracture)
-        {
-          fracture_ids.push_back(fid);
-          if constexpr (dim == 2)
-            {
-              std::map<unsigned int, std::vector<unsigned int>> faces_at;
-              for (const unsigned int k : faces)
-                for (const unsigned int v : raw.fracture_faces[k].vertices)
-                  faces_at[v].push_back(k);
-              std::vector<unsigned int> ends;
-              for (const auto &[v, fs] : faces_at)
-                {
-                  POROFRAC_CHECK_INPUT(fs.size() <= 2,
-                              InputError("Geometry/Fractures",
-                                         "fracture " + std::to_string(fid) +
-                                           " branches or crosses itself at " + io::to_text(V[v])));
-                  if (fs.size() == 1)
-                    ends.push_back(v);
-                }
-              POROFRAC_CHECK_INPUT(ends.size() == 2 || ends.empty(),
-                          InputError("Geometry/Fractures",
-                                     "fracture " + std::to_string(fid) +
-                                       " is not one connected polyline"));
-              unsigned int start = ends.empty() ? faces_at.begin()->first : ends[0];
-              const auto   hint  = raw.fracture_start.find(fid);
-              if (ends.size() == 2)
-                {
-                  if (hint != raw.fracture_start.end())
-                    {
-                      if (V[ends[1]].distance(hint->second) < V[ends[0]].distance(hint->second))
-                        start = ends[1];
-                    }
-                  else if (V[ends[1]][0] < V[ends[0]][0] - 1e-12 ||
-                           (std::abs(V[ends[1]][0] - V[ends[0]][0]) <= 1e-12 &&
-                            V[ends[1]][1] < V[ends[0]][1]))
-                    start = ends[1];
-                }
-              std::set<unsigned int> visited;
-              unsigned int           node = start;
-              double                 s    = 0;
-              while (visited.size() < faces.size())
-                {
-                  unsigned int next_face = numbers::invalid_unsigned_int;
-                  for (const unsigned int k : faces_at[node])
-                    if (!visited.count(k))
-                      next_face = k;
-                  POROFRAC_CHECK_INPUT(next_face != numbers::invalid_unsigned_int,
-                              InputError("Geometry/Fractures",
-                                         "fracture " + std::to_string(fid) +
-                                           " is not one connected polyline"));
-                  visited.insert(next_face);
-                  const auto  &fv    = raw.fracture_faces[next_face].vertices;
-                  const unsigned int other = (fv[0] == node) ? fv[1] : fv[0];
-                  oriented[next_face]      = {{node, other}};
-                  s_begin[next_face]       = s;
-                  s += V[node].distance(V[other]);
-                  node = other;
-                }
-            }
-          else
-            for (const unsigned int k : faces)
-              oriented[k] = raw.fracture_faces[k].vertices;
-        }
+      std::vector<std::array<unsigned int, dim>> oriented;
+      std::vector<double>                        s_begin;
+      chain_fractures<dim>(raw, oriented, s_begin, fracture_ids);
 
       // --- Boundary descriptions for the Triangulation.
-      SubCellData           subcell;
+      SubCellData                    subcell;
       std::vector<CellData<dim - 1>> boundary_objects;
       auto add_boundary = [&](const FaceKey &f, const types::boundary_id id) {
         CellData<dim - 1> data(dim);
@@ -273,14 +348,16 @@ namespace porofrac
       for (const auto &f : raw.boundary_faces)
         {
           POROFRAC_CHECK_INPUT(f.tag < first_fracture_boundary_id,
-                      InputError("Geometry", "outer boundary ids must be below " +
-                                               std::to_string(first_fracture_boundary_id)));
+                               InputError("Geometry",
+                                          "outer boundary ids must be below " +
+                                            std::to_string(first_fracture_boundary_id)));
           const FaceKey key = sorted_face<dim>(f.vertices);
           const auto    it  = cells_of_face.find(key);
           POROFRAC_CHECK_INPUT(it != cells_of_face.end() && it->second.size() == 1,
-                      InputError("Geometry", "a boundary face at " +
-                                               io::to_text(face_centre<dim>(V, key)) +
-                                               " is not on the outer boundary of the mesh"));
+                               InputError("Geometry",
+                                          "a boundary face at " +
+                                            io::to_text(face_centre<dim>(V, key)) +
+                                            " is not on the outer boundary of the mesh"));
           add_boundary(cut_face(it->second[0], f.vertices), f.tag);
           outer_ids.insert(f.tag);
         }
@@ -289,7 +366,7 @@ namespace porofrac
       // Plus/minus cells of each raw fracture face, from n+.
       struct Pending
       {
-        unsigned int              raw_face;
+        unsigned int                raw_face;
         std::array<unsigned int, 2> cells;
         std::array<FaceKey, 2>      cut_faces;
         Tensor<1, dim>              normal, tangent;
@@ -317,8 +394,8 @@ namespace porofrac
                 p.normal *= -1;
               p.tangent = (V[f[1]] - V[f[0]]) / V[f[1]].distance(V[f[0]]);
             }
-          const auto &two    = cells_of_face.at(sorted_face<dim>(f));
-          const Point<dim> c = face_centre<dim>(V, f);
+          const auto      &two = cells_of_face.at(sorted_face<dim>(f));
+          const Point<dim> c   = face_centre<dim>(V, f);
           Point<dim>       centroid0;
           for (const unsigned int v : raw.cells[two[0]])
             centroid0 += V[v] / double(dim + 1);
@@ -372,9 +449,9 @@ namespace porofrac
       for (const unsigned int v : fracture_vertices)
         {
           FractureNode<dim> node;
-          node.location    = V[v];
-          node.on_boundary = boundary_vertices.count(v) > 0;
-          node.copies      = copies_of_vertex[v];
+          node.location     = V[v];
+          node.on_boundary  = boundary_vertices.count(v) > 0;
+          node.copies       = copies_of_vertex[v];
           node_of_vertex[v] = fracture_nodes.size();
           fracture_nodes.push_back(node);
         }
@@ -388,21 +465,21 @@ namespace porofrac
       for (const Pending &p : pending)
         {
           FractureFace<dim> face;
-          face.index          = fracture_faces.size();
-          face.fracture_id    = raw.fracture_faces[p.raw_face].tag;
-          face.normal         = p.normal;
-          face.tangent        = p.tangent;
-          face.measure        = face_measure<dim>(V, oriented[p.raw_face]);
-          face.centre         = face_centre<dim>(V, oriented[p.raw_face]);
-          face.abscissa_begin = s_begin[p.raw_face];
-          face.abscissa_end   = (dim == 2) ? s_begin[p.raw_face] + face.measure : 0.;
-          face.abscissa       = 0.5 * (face.abscissa_begin + face.abscissa_end);
+          face.index           = fracture_faces.size();
+          face.fracture_id     = raw.fracture_faces[p.raw_face].tag;
+          face.normal          = p.normal;
+          face.tangent         = p.tangent;
+          face.measure         = face_measure<dim>(V, oriented[p.raw_face]);
+          face.centre          = face_centre<dim>(V, oriented[p.raw_face]);
+          face.abscissa_begin  = s_begin[p.raw_face];
+          face.abscissa_end    = (dim == 2) ? s_begin[p.raw_face] + face.measure : 0.;
+          face.abscissa        = 0.5 * (face.abscissa_begin + face.abscissa_end);
           face.distance_to_tip = std::numeric_limits<double>::infinity();
           for (unsigned int k = 0; k < dim; ++k)
             face.nodes[k] = node_of_vertex.at(oriented[p.raw_face][k]);
           for (unsigned int side = 0; side < 2; ++side)
             {
-              face.cell[side] = find_cell(p.cells[side]);
+              face.cell[side]    = find_cell(p.cells[side]);
               const FaceKey want = sorted_face<dim>(p.cut_faces[side]);
               face.face_no[side] = numbers::invalid_unsigned_int;
               for (const unsigned int f : face.cell[side]->face_indices())
@@ -449,7 +526,7 @@ namespace porofrac
                 node.type = NodeType::junction;
               else
                 node.type = (std::abs(a.normal * b.normal) > 1 - 1e-10) ? NodeType::interior :
-                                                                            NodeType::corner;
+                                                                          NodeType::corner;
             }
         }
       for (auto &face : fracture_faces)
@@ -493,8 +570,8 @@ namespace porofrac
     double
     CutMesh<dim>::fracture_measure(const unsigned int fracture_id) const
     {
-      double total = 0;
-      const auto it = faces_of_fracture.find(fracture_id);
+      double     total = 0;
+      const auto it    = faces_of_fracture.find(fracture_id);
       if (it != faces_of_fracture.end())
         for (const unsigned int f : it->second)
           total += fracture_faces[f].measure;
