@@ -344,7 +344,10 @@ namespace porofrac
       context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
                      << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
                      << " interface nodes, " << grid.n_intersections << " intersection nodes, "
-                     << solver.n_unknowns() << " unknowns" << std::endl;
+                     << solver.n_unknowns() << " unknowns" << std::endl
+                     << "Flow: " << grid.n_non_admissible
+                     << " cell faces with the circumcentre on the wrong side, " << grid.n_fallback
+                     << " non-Delaunay connections (unsigned distances)" << std::endl;
       context.summary["n_unknowns_flow"] = solver.n_unknowns();
 
       const auto mean_width = [&]() {

@@ -97,6 +97,7 @@ namespace porofrac
       n_interfaces     = 2 * n_fracture_cells;
       n_intersections  = 0;
       n_non_admissible = 0;
+      n_fallback       = 0;
 
       nodes.resize(n_matrix_cells + n_fracture_cells + n_interfaces);
       for (const auto &cell : tria.active_cell_iterators())
@@ -155,9 +156,17 @@ namespace porofrac
                   const unsigned int L = cell->neighbor(f)->active_cell_index();
                   if (K < L)
                     {
-                      const double d_L = (nodes[L].centre - centre) * normal;
+                      double d_a = d_K, d_b = (nodes[L].centre - centre) * normal;
+                      // Non-Delaunay pair (the two circumcentres in the wrong order): fall back
+                      // to unsigned distances, a consistent but not exact two-point flux.
+                      if (d_a + d_b < 1e-2 * measure)
+                        {
+                          ++n_fallback;
+                          d_a = std::max(std::abs(d_a), 5e-3 * measure);
+                          d_b = std::max(std::abs(d_b), 5e-3 * measure);
+                        }
                       connections.push_back({ConnectionKind::matrix_matrix, K, L, matrix_rock,
-                                             matrix_rock, area, d_K, d_L});
+                                             matrix_rock, area, d_a, d_b});
                     }
                   continue;
                 }

@@ -128,6 +128,10 @@ namespace porofrac
       unsigned int            n_intersections;
       /// Number of matrix connections whose centre lies on the wrong side of the face.
       unsigned int            n_non_admissible;
+      /// Matrix-matrix connections with d_K,e + d_L,e <= 0 (non-Delaunay pairs), where unsigned
+      /// distances are used instead; boundary and interface faces with d_K,e <= 0 use
+      /// max(d_K,e, 1e-3 diameter). Both lose the exactness of TPFA for linear fields.
+      unsigned int            n_fallback;
 
       /// Per-cell inputs: porosity and isotropic permeability (m^2) of matrix cells, aperture d_f
       /// (m) of fracture cells, normal transmissibility Lambda_f (m).
