@@ -326,6 +326,7 @@ namespace porofrac
                     "boundary id " + std::to_string(id) + " is not on the mesh");
 
       TwoPhaseSolver<dim> solver(grid, rocks, newton);
+      solver.timer = &context.timer;
       solver.matrix_dirichlet   = matrix_bc;
       solver.fracture_dirichlet = fracture_bc;
       const std::array<double, 2> p_m = {{get_double(prm, {"Flow", "Matrix"}, "Initial pressure w"),
@@ -396,7 +397,6 @@ namespace porofrac
           StepResult   result;
           while (true)
             {
-              TimerOutput::Scope timer(context.timer, "Flow: Newton");
               solver.state = solver.old_state;
               result       = solver.solve_time_step(dt_step, context.verbose);
               if (result.converged)

@@ -6,6 +6,7 @@
 #include <porofrac/flow/two_phase_solver.h>
 
 #include <cmath>
+#include <memory>
 #include <iomanip>
 
 namespace porofrac
@@ -236,7 +237,12 @@ namespace porofrac
         {
           // Entry slope for the first iterations only, exact Jacobian afterwards.
           entry_slope_active = it < parameters.entry_slope_iterations;
-          assemble(state, old_state, dt, residual, &jacobian);
+          {
+            std::unique_ptr<TimerOutput::Scope> t;
+            if (timer)
+              t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: assembly");
+            assemble(state, old_state, dt, residual, &jacobian);
+          }
           entry_slope_active = false;
           const double r = residual.l2_norm();
           if (!std::isfinite(r))
@@ -259,17 +265,22 @@ namespace porofrac
             }
           if (it == parameters.max_iterations)
             break;
-          SparseDirectUMFPACK solver;
-          try
-            {
-              solver.initialize(jacobian);
-            }
-          catch (...)
-            {
-              return result;
-            }
-          update = residual;
-          solver.solve(update);
+          {
+            std::unique_ptr<TimerOutput::Scope> t;
+            if (timer)
+              t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: linear solve (UMFPACK)");
+            SparseDirectUMFPACK solver;
+            try
+              {
+                solver.initialize(jacobian);
+              }
+            catch (...)
+              {
+                return result;
+              }
+            update = residual;
+            solver.solve(update);
+          }
           // Appleyard-type chop: the capillary pressure of a node changes by at most
           // capillary_chop times the pressure scale of its saturation law per iteration.
           double p_max = 0, du_max = 0;

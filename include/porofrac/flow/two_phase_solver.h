@@ -3,6 +3,7 @@
 #define POROFRAC_FLOW_TWO_PHASE_SOLVER_H
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -121,6 +122,8 @@ namespace porofrac
 
       State state;
       State old_state;
+      /// Optional: times "Flow: assembly" and "Flow: linear solve (UMFPACK)".
+      TimerOutput *timer = nullptr;
 
       const TpfaGrid<dim>          &grid;
       const std::array<RockType, 2> rocks;
