@@ -2,6 +2,7 @@
 #include <porofrac/app/parameters.h>
 #include <porofrac/geometry/parameters.h>
 #include <porofrac/flow/scene.h>
+#include <porofrac/mechanics/scene.h>
 
 namespace porofrac
 {
@@ -34,6 +35,7 @@ namespace porofrac
 
       geometry::GeometryParameters::declare_parameters(prm);
       // MECHANICS HOOK (declare)
+      mechanics::declare_parameters(prm);
       // FLOW HOOK (declare)
       flow::declare_parameters(prm);
     }

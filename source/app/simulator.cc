@@ -12,6 +12,7 @@
 #include <porofrac/geometry/parameters.h>
 #include <porofrac/io/run_context.h>
 // MECHANICS HOOK (include)
+#include <porofrac/mechanics/scene.h>
 // FLOW HOOK (include)
 #include <porofrac/flow/scene.h>
 
@@ -80,7 +81,7 @@ namespace porofrac
       if (physics == "contact mechanics")
         {
           // MECHANICS HOOK (run)
-          throw InputError("Physics", "'contact mechanics' is not available in this build yet");
+          mechanics::run_scene<dim>(prm, *mesh, context);
         }
       else if (physics == "two-phase flow")
         {

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_MECHANICS_CONTACT_PROBLEM_H
+#define POROFRAC_MECHANICS_CONTACT_PROBLEM_H
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <porofrac/geometry/cut_mesh.h>
+#include <porofrac/mechanics/contact_law.h>
+#include <porofrac/mechanics/parameters.h>
+
+#include <memory>
+#include <vector>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    using namespace dealii;
+
+    /**
+     * Linear elasticity (P2 simplices, plane strain in 2D) on a cut mesh with one multiplier
+     * lambda_sigma in R^dim per fracture face (paper eq. (10)) and Coulomb friction through the
+     * complementarity functions (25)-(26). Unknowns: all displacement dofs, then dim multiplier
+     * components per fracture face (global frame), in one sparse matrix solved by UMFPACK.
+     */
+    template <int dim>
+    class ContactProblem
+    {
+    public:
+      ContactProblem(const geometry::CutMesh<dim> &mesh, const ContactParameters &parameters,
+                     ConditionalOStream &progress, TimerOutput &timer);
+
+      /// Dofs, constraints, elasticity block (assembled once), coupling block.
+      void
+      setup();
+
+      /// Runs the contact iterations; throws SolverFailure after max_iterations.
+      void
+      solve();
+
+      unsigned int
+      n_dofs() const;
+      unsigned int
+      n_displacement_dofs() const
+      {
+        return dof_handler.n_dofs();
+      }
+
+      /// Face-averaged jump [u]_sigma and multiplier of face @p f, in the global frame.
+      Tensor<1, dim>
+      jump(const unsigned int f) const;
+      Tensor<1, dim>
+      multiplier(const unsigned int f) const;
+      /// Local frame rows: n+, then tangent(s).
+      Tensor<2, dim>
+      frame(const unsigned int f) const;
+      double
+      friction(const unsigned int f) const
+      {
+        return friction_values[f];
+      }
+      FaceState
+      state(const unsigned int f) const;
+
+      unsigned int iterations = 0;
+      bool         converged  = false;
+      std::vector<double> residual_history;
+
+      const DoFHandler<dim> &
+      get_dof_handler() const
+      {
+        return dof_handler;
+      }
+      const Vector<double> &
+      displacement() const
+      {
+        return u;
+      }
+      const geometry::CutMesh<dim> &
+      get_mesh() const
+      {
+        return mesh;
+      }
+
+      /// Cauchy stress at a point of a cell (for tests): C eps(u) + pre-stress.
+      SymmetricTensor<2, dim>
+      stress(const typename DoFHandler<dim>::active_cell_iterator &cell,
+             const Point<dim> &unit_point) const;
+
+    private:
+      void
+      make_constraints();
+      void
+      assemble_elasticity();
+      void
+      assemble_coupling();
+      /// Scaled contact residual (stress units) and mechanical residual, relative.
+      double
+      relative_residual() const;
+      /// r = K u (unconstrained elasticity operator).
+      void
+      apply_elasticity(Vector<double> &r) const;
+
+      const geometry::CutMesh<dim> &mesh;
+      const ContactParameters        prm;
+      ConditionalOStream            &progress;
+      TimerOutput                   &timer;
+
+      FESystem<dim>             fe;
+      DoFHandler<dim>           dof_handler;
+      AffineConstraints<double> constraints;     ///< inhomogeneous, for u
+      AffineConstraints<double> constraints_hom; ///< homogeneous, for increments
+
+      SparsityPattern      sparsity;
+      SparseMatrix<double> K_full;      ///< unconstrained elasticity (residuals)
+      SparseMatrix<double> base_matrix; ///< constrained K + B^T
+      SparseMatrix<double> system_matrix;
+      Vector<double>       f;           ///< load vector (unconstrained)
+      Vector<double>       u;           ///< displacement
+      Vector<double>       lambda;      ///< dim per face
+
+      /// B: for face f, entries (dof, component, +-int_sigma phi) so that int [u] = sum.
+      struct CouplingEntry
+      {
+        types::global_dof_index dof;
+        unsigned int            component;
+        double                  value;
+      };
+      std::vector<std::vector<CouplingEntry>> coupling;
+      std::vector<double>                     friction_values;
+      double                                  lambda_scale = 1;
+    };
+  } // namespace mechanics
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_MECHANICS_PARAMETERS_H
+#define POROFRAC_MECHANICS_PARAMETERS_H
+
+#include <deal.II/base/types.h>
+
+#include <porofrac/mechanics/contact_law.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    /// A point constraint: fix components of u at the mesh vertices located at @p point.
+    struct PointConstraint
+    {
+      std::vector<double>                  point;
+      std::map<unsigned int, std::string> values; ///< component -> expression (constant)
+    };
+
+    /// Everything ContactProblem needs, independent of the deck.
+    struct ContactParameters
+    {
+      double        young_modulus = 1;
+      double        poisson_ratio = 0;
+      ContactMethod method        = ContactMethod::active_set;
+      double        c             = 1e9;
+      bool          stick_guess   = true;
+      double        initial_lambda_n = 100;
+      unsigned int  max_iterations   = 50;
+      double        tolerance        = 1e-6;
+      /// boundary id -> component -> muparser expression of x, y (, z)
+      std::map<types::boundary_id, std::map<unsigned int, std::string>> dirichlet;
+      std::map<types::boundary_id, std::map<unsigned int, std::string>> traction;
+      std::map<types::boundary_id, std::string>                         pressure;
+      std::vector<PointConstraint>                                      point_constraints;
+      /// fracture id -> expression of x, y (, z) and d; `all` used for fractures not listed.
+      std::map<unsigned int, std::string> friction;
+      std::string                         friction_all = "0";
+      std::vector<std::string>            body_force; ///< dim expressions (empty: zero)
+      std::vector<double>                 pre_stress; ///< dim*dim row-major, constant (empty: 0)
+    };
+
+    /**
+     * Parses "id: x=expr, y=expr; id: ..." into id -> component -> expression. Components are
+     * named x, y, z. Errors name @p parameter.
+     */
+    std::map<types::boundary_id, std::map<unsigned int, std::string>>
+    parse_component_map(const std::string &text, const unsigned int dim,
+                        const std::string &parameter);
+
+    /// Parses "id: expr; id: expr" (or one expression for all, key numbers::invalid_unsigned_int).
+    std::map<unsigned int, std::string>
+    parse_scalar_map(const std::string &text, const std::string &parameter);
+
+    /// Parses "(px, py): x=v, y=v; (px, py): ..." into point constraints.
+    std::vector<PointConstraint>
+    parse_point_constraints(const std::string &text, const unsigned int dim,
+                            const std::string &parameter);
+  } // namespace mechanics
+} // namespace porofrac
+
+#endif

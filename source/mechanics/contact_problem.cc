@@ -1,0 +1,582 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/mechanics/contact_problem.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    namespace
+    {
+      template <int dim>
+      std::string
+      coordinate_names(const bool with_d)
+      {
+        std::string v = (dim == 2 ? "x,y" : "x,y,z");
+        return with_d ? v + ",d" : v;
+      }
+
+      /// A vector FunctionParser with the given component expressions ("0" elsewhere).
+      template <int dim>
+      std::unique_ptr<FunctionParser<dim>>
+      make_vector_function(const std::map<unsigned int, std::string> &expressions,
+                           const std::string                         &parameter)
+      {
+        std::vector<std::string> e(dim, "0");
+        for (const auto &[c, ex] : expressions)
+          e[c] = ex;
+        auto fp = std::make_unique<FunctionParser<dim>>(dim);
+        try
+          {
+            fp->initialize(coordinate_names<dim>(false), e, {{"pi", numbers::PI}});
+          }
+        catch (...)
+          {
+            throw InputError(parameter, "cannot parse the expressions");
+          }
+        return fp;
+      }
+    } // namespace
+
+    template <int dim>
+    ContactProblem<dim>::ContactProblem(const geometry::CutMesh<dim> &mesh,
+                                        const ContactParameters      &parameters,
+                                        ConditionalOStream &progress, TimerOutput &timer)
+      : mesh(mesh)
+      , prm(parameters)
+      , progress(progress)
+      , timer(timer)
+      , fe(FE_SimplexP<dim>(2), dim)
+      , dof_handler(mesh.triangulation)
+    {
+      check_input(prm.c > 0, "Mechanics/Complementarity parameter c", "must be positive");
+      check_input(prm.young_modulus > 0, "Mechanics/Young modulus", "must be positive");
+      check_input(prm.poisson_ratio < 0.5 && prm.poisson_ratio > -1, "Mechanics/Poisson ratio",
+                  "must be below 0.5 and above -1");
+      check_input(prm.tolerance > 0, "Mechanics/Tolerance", "must be positive");
+      check_input(prm.max_iterations > 0, "Mechanics/Max iterations", "must be positive");
+    }
+
+    template <int dim>
+    unsigned int
+    ContactProblem<dim>::n_dofs() const
+    {
+      return dof_handler.n_dofs() + dim * mesh.fracture_faces.size();
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::make_constraints()
+    {
+      const std::string pname = "Mechanics/Dirichlet";
+      for (AffineConstraints<double> *target : {&constraints, &constraints_hom})
+        {
+          const bool homogeneous = (target == &constraints_hom);
+          target->clear();
+          for (const auto &[id, comps] : prm.dirichlet)
+            {
+              if (std::find(mesh.outer_boundary_ids.begin(), mesh.outer_boundary_ids.end(), id) ==
+                  mesh.outer_boundary_ids.end())
+                throw InputError(pname, "boundary id " + std::to_string(id) +
+                                          " is not an outer boundary of the mesh");
+              std::vector<bool> mask(dim, false);
+              for (const auto &[c, e] : comps)
+                mask[c] = true;
+              auto fp = make_vector_function<dim>(comps, pname);
+              Functions::ZeroFunction<dim> zero(dim);
+              VectorTools::interpolate_boundary_values(mesh.mapping(), dof_handler, id,
+                                                       homogeneous ?
+                                                         static_cast<const Function<dim> &>(zero) :
+                                                         *fp,
+                                                       *target, ComponentMask(mask));
+            }
+          // Point constraints (5.2.1 symmetry): every vertex at the point.
+          const double tol = 1e-8 * GridTools::diameter(mesh.triangulation);
+          for (const PointConstraint &pc : prm.point_constraints)
+            {
+              Point<dim> p;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = pc.point[d];
+              unsigned int hits = 0;
+              for (const auto &cell : dof_handler.active_cell_iterators())
+                for (const unsigned int v : cell->vertex_indices())
+                  if (cell->vertex(v).distance(p) < tol)
+                    {
+                      ++hits;
+                      for (const auto &[c, e] : pc.values)
+                        {
+                          const auto dof = cell->vertex_dof_index(v, c);
+                          if (target->is_constrained(dof))
+                            continue;
+                          target->add_line(dof);
+                          if (!homogeneous)
+                            {
+                              FunctionParser<dim> fp(1);
+                              fp.initialize(coordinate_names<dim>(false), e,
+                                            {{"pi", numbers::PI}});
+                              target->set_inhomogeneity(dof, fp.value(p));
+                            }
+                        }
+                    }
+              if (hits == 0)
+                {
+                  std::ostringstream s;
+                  s << "the point (" << p << ") is not a mesh vertex";
+                  throw InputError("Mechanics/Point constraints", s.str());
+                }
+            }
+          target->close();
+        }
+      check_input(constraints.n_constraints() > 0, "Mechanics/Dirichlet",
+                  "no Dirichlet condition or point constraint: the elasticity system is singular");
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::setup()
+    {
+      TimerOutput::Scope t(timer, "Mechanics: setup");
+      dof_handler.distribute_dofs(fe);
+      make_constraints();
+
+      const unsigned int n_u = dof_handler.n_dofs();
+      const unsigned int N   = n_dofs();
+      DynamicSparsityPattern dsp(N, N);
+      std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(local);
+          constraints_hom.add_entries_local_to_global(local, dsp, true);
+          for (const auto i : local)
+            for (const auto j : local)
+              dsp.add(i, j);
+        }
+
+      // Coupling int_sigma lambda . [v] (paper eq. (10)), [v] = v+ - v-.
+      const QGaussSimplex<dim - 1> face_quadrature(3);
+      FEFaceValues<dim>            fe_face(mesh.mapping(), fe, face_quadrature,
+                                update_values | update_JxW_values);
+      coupling.assign(mesh.fracture_faces.size(), {});
+      for (const auto &face : mesh.fracture_faces)
+        {
+          std::map<std::pair<types::global_dof_index, unsigned int>, double> entries;
+          for (unsigned int side = 0; side < 2; ++side)
+            {
+              const typename DoFHandler<dim>::active_cell_iterator cell(
+                &mesh.triangulation, face.cell[side]->level(), face.cell[side]->index(),
+                &dof_handler);
+              fe_face.reinit(cell, face.face_no[side]);
+              cell->get_dof_indices(local);
+              const double sign = (side == geometry::plus ? 1. : -1.);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  if (!fe.has_support_on_face(i, face.face_no[side]))
+                    continue;
+                  const unsigned int comp = fe.system_to_component_index(i).first;
+                  double             v    = 0;
+                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                    v += fe_face.shape_value_component(i, q, comp) * fe_face.JxW(q);
+                  entries[{local[i], comp}] += sign * v;
+                }
+            }
+          for (const auto &[key, v] : entries)
+            if (std::abs(v) > 1e-14 * face.measure)
+              coupling[face.index].push_back({key.first, key.second, v});
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const unsigned int row = n_u + dim * face.index + i;
+              for (unsigned int j = 0; j < dim; ++j)
+                dsp.add(row, n_u + dim * face.index + j);
+              for (const auto &e : coupling[face.index])
+                {
+                  dsp.add(row, e.dof);
+                  dsp.add(e.dof, row);
+                }
+            }
+        }
+      sparsity.copy_from(dsp);
+      K_full.reinit(sparsity);
+      base_matrix.reinit(sparsity);
+      system_matrix.reinit(sparsity);
+      f.reinit(n_u);
+      u.reinit(n_u);
+      lambda.reinit(dim * mesh.fracture_faces.size());
+
+      // Friction coefficient per face: muparser of x, y (, z) and d (distance to the tips).
+      friction_values.resize(mesh.fracture_faces.size());
+      for (const auto &face : mesh.fracture_faces)
+        {
+          const auto  it   = prm.friction.find(face.fracture_id);
+          std::string expr = (it != prm.friction.end() ? it->second : prm.friction_all);
+          FunctionParser<dim> fp(1);
+          try
+            {
+              fp.initialize(coordinate_names<dim>(true), expr, {{"pi", numbers::PI}}, true);
+            }
+          catch (...)
+            {
+              throw InputError("Mechanics/Friction coefficient", "cannot parse '" + expr + "'");
+            }
+          fp.set_time(std::isfinite(face.distance_to_tip) ? face.distance_to_tip : 1e100);
+          const double F = fp.value(face.centre);
+          if (!(F >= 0))
+            {
+              std::ostringstream s;
+              s << "negative or invalid value " << F << " on fracture " << face.fracture_id;
+              throw InputError("Mechanics/Friction coefficient", s.str());
+            }
+          friction_values[face.index] = F;
+        }
+      assemble_elasticity();
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::assemble_elasticity()
+    {
+      TimerOutput::Scope t(timer, "Mechanics: assembly");
+      const double       E = prm.young_modulus, nu = prm.poisson_ratio;
+      // Hooke's law; in 2D these Lame coefficients give plane strain.
+      const double mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu));
+
+      const QGaussSimplex<dim>     quadrature(3);
+      const QGaussSimplex<dim - 1> face_quadrature(3);
+      FEValues<dim>                fe_values(mesh.mapping(), fe, quadrature,
+                              update_values | update_gradients | update_quadrature_points |
+                                update_JxW_values);
+      FEFaceValues<dim>            fe_face(mesh.mapping(), fe, face_quadrature,
+                                update_values | update_quadrature_points |
+                                  update_normal_vectors | update_JxW_values);
+      const FEValuesExtractors::Vector disp(0);
+
+      std::unique_ptr<FunctionParser<dim>> body;
+      if (!prm.body_force.empty())
+        {
+          std::map<unsigned int, std::string> m;
+          for (unsigned int d = 0; d < dim; ++d)
+            m[d] = prm.body_force[d];
+          body = make_vector_function<dim>(m, "Mechanics/Body force");
+        }
+      SymmetricTensor<2, dim> sigma0;
+      if (!prm.pre_stress.empty())
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            sigma0[i][j] = prm.pre_stress[i * dim + j];
+      std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>> traction, pressure;
+      for (const auto &[id, m] : prm.traction)
+        traction[id] = make_vector_function<dim>(m, "Mechanics/Traction");
+      for (const auto &[id, e] : prm.pressure)
+        {
+          pressure[id] = std::make_unique<FunctionParser<dim>>(1);
+          pressure[id]->initialize(coordinate_names<dim>(false), e, {{"pi", numbers::PI}});
+        }
+
+      const unsigned int                   n = fe.n_dofs_per_cell();
+      FullMatrix<double>                   cell_matrix(n, n);
+      Vector<double>                       cell_rhs(n);
+      std::vector<types::global_dof_index> local(n);
+      std::vector<SymmetricTensor<2, dim>> eps(n);
+      Vector<double>                       value(dim);
+      K_full = 0;
+      base_matrix = 0;
+      f = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          fe_values.reinit(cell);
+          cell_matrix = 0;
+          cell_rhs    = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                eps[i] = fe_values[disp].symmetric_gradient(i, q);
+              if (body)
+                body->vector_value(fe_values.quadrature_point(q), value);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const SymmetricTensor<2, dim> s_i = 2 * mu * eps[i] + lam * trace(eps[i]) *
+                                                                          unit_symmetric_tensor<dim>();
+                  for (unsigned int j = 0; j < n; ++j)
+                    cell_matrix(i, j) += (s_i * eps[j]) * fe_values.JxW(q);
+                  double r = -(sigma0 * eps[i]);
+                  if (body)
+                    {
+                      const unsigned int c = fe.system_to_component_index(i).first;
+                      r += value[c] * fe_values.shape_value(i, q);
+                    }
+                  cell_rhs(i) += r * fe_values.JxW(q);
+                }
+            }
+          for (const unsigned int fn : cell->face_indices())
+            if (cell->face(fn)->at_boundary())
+              {
+                const auto id = cell->face(fn)->boundary_id();
+                const bool tr = traction.count(id) > 0, pr = pressure.count(id) > 0;
+                if (!tr && !pr)
+                  continue;
+                fe_face.reinit(cell, fn);
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  {
+                    Tensor<1, dim> t;
+                    if (tr)
+                      {
+                        traction[id]->vector_value(fe_face.quadrature_point(q), value);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          t[d] += value[d];
+                      }
+                    if (pr)
+                      t -= pressure[id]->value(fe_face.quadrature_point(q)) *
+                           fe_face.normal_vector(q);
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        const unsigned int c = fe.system_to_component_index(i).first;
+                        cell_rhs(i) += t[c] * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                      }
+                  }
+              }
+          cell->get_dof_indices(local);
+          K_full.add(local, cell_matrix);
+          for (unsigned int i = 0; i < n; ++i)
+            f(local[i]) += cell_rhs(i);
+          constraints_hom.distribute_local_to_global(cell_matrix, local, base_matrix);
+        }
+      assemble_coupling();
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::assemble_coupling()
+    {
+      const unsigned int n_u = dof_handler.n_dofs();
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        for (const auto &e : coupling[fi])
+          if (!constraints_hom.is_constrained(e.dof))
+            base_matrix.add(e.dof, n_u + dim * fi + e.component, e.value);
+      // A typical multiplier magnitude for the stopping criterion: the load.
+      lambda_scale = 0;
+    }
+
+    template <int dim>
+    Tensor<2, dim>
+    ContactProblem<dim>::frame(const unsigned int fi) const
+    {
+      const auto    &face = mesh.fracture_faces[fi];
+      Tensor<2, dim> R;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          R[0][d] = face.normal[d];
+          R[1][d] = face.tangent[d];
+        }
+      if constexpr (dim == 3)
+        {
+          const Tensor<1, 3> t2 = cross_product_3d(face.normal, face.tangent);
+          for (unsigned int d = 0; d < 3; ++d)
+            R[2][d] = t2[d];
+        }
+      return R;
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    ContactProblem<dim>::jump(const unsigned int fi) const
+    {
+      Tensor<1, dim> j;
+      for (const auto &e : coupling[fi])
+        j[e.component] += e.value * u(e.dof);
+      return j / mesh.fracture_faces[fi].measure;
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    ContactProblem<dim>::multiplier(const unsigned int fi) const
+    {
+      Tensor<1, dim> l;
+      for (unsigned int d = 0; d < dim; ++d)
+        l[d] = lambda(dim * fi + d);
+      return l;
+    }
+
+    template <int dim>
+    FaceState
+    ContactProblem<dim>::state(const unsigned int fi) const
+    {
+      const Tensor<2, dim>        R = frame(fi);
+      const LocalContactLaw<dim> law{friction_values[fi], prm.c};
+      return law.state(R * multiplier(fi), R * jump(fi));
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::apply_elasticity(Vector<double> &r) const
+    {
+      // K_full is square of size n_dofs() but only has entries in the displacement block.
+      Vector<double> x(n_dofs()), y(n_dofs());
+      for (unsigned int i = 0; i < u.size(); ++i)
+        x(i) = u(i);
+      K_full.vmult(y, x);
+      for (unsigned int i = 0; i < u.size(); ++i)
+        r(i) = y(i);
+    }
+
+    template <int dim>
+    double
+    ContactProblem<dim>::relative_residual() const
+    {
+      // Mechanical rows: f - K u - B^T lambda on unconstrained dofs.
+      Vector<double> r(dof_handler.n_dofs());
+      apply_elasticity(r);
+      r.sadd(-1., f);
+      double fnorm2 = 0;
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        for (const auto &e : coupling[fi])
+          r(e.dof) -= e.value * lambda(dim * fi + e.component);
+      double rn2 = 0;
+      for (unsigned int i = 0; i < r.size(); ++i)
+        if (!constraints.is_constrained(i))
+          {
+            rn2 += r(i) * r(i);
+            fnorm2 += f(i) * f(i);
+          }
+      // Contact rows, (25)-(26) scaled to stress units, weighted by |sigma|.
+      double c2 = 0, l2 = 0, cj2 = 0;
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        {
+          const Tensor<2, dim>        R = frame(fi);
+          const LocalContactLaw<dim> law{friction_values[fi], prm.c};
+          const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
+          const double                w = mesh.fracture_faces[fi].measure;
+          c2 += w * law.residual(l, j, true).norm_square();
+          l2 += w * l.norm_square();
+          cj2 += w * (prm.c * j).norm_square();
+        }
+      const double scale  = (l2 > 0 ? l2 : cj2);
+      const double rel_c  = (scale > 0 ? std::sqrt(c2 / scale) : std::sqrt(c2));
+      const double rel_m  = std::sqrt(rn2) / std::max(std::sqrt(fnorm2), 1e-300);
+      return std::max(rel_c, fnorm2 > 0 ? rel_m : 0.);
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::solve()
+    {
+      const unsigned int n_u = dof_handler.n_dofs();
+      const unsigned int N   = n_dofs();
+      // Initial guess: u = 0 (plus Dirichlet values); open lambda = 0, or stick lambda_n = given.
+      u = 0;
+      constraints.distribute(u);
+      lambda = 0;
+      if (prm.stick_guess)
+        for (const auto &face : mesh.fracture_faces)
+          for (unsigned int d = 0; d < dim; ++d)
+            lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
+
+      residual_history.clear();
+      converged = false;
+      Vector<double> rhs(N), delta(N);
+      for (iterations = 1; iterations <= prm.max_iterations; ++iterations)
+        {
+          {
+            TimerOutput::Scope t(timer, "Mechanics: contact update");
+            system_matrix.copy_from(base_matrix);
+            rhs = 0;
+            // Mechanical residual f - K u - B^T lambda.
+            Vector<double> r(n_u);
+            apply_elasticity(r);
+            for (unsigned int i = 0; i < n_u; ++i)
+              rhs(i) = constraints_hom.is_constrained(i) ? 0. : f(i) - r(i);
+            for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+              for (const auto &e : coupling[fi])
+                if (!constraints_hom.is_constrained(e.dof))
+                  rhs(e.dof) -= e.value * lambda(dim * fi + e.component);
+            // Contact rows A_l R lambda + A_j R [u] = r, written for the increment.
+            for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+              {
+                const Tensor<2, dim>        R = frame(fi);
+                const LocalContactLaw<dim> law{friction_values[fi], prm.c};
+                const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
+                Tensor<2, dim>              Al, Aj;
+                Tensor<1, dim>              r_loc;
+                law.rows(prm.method, l, j, Al, Aj, r_loc);
+                const Tensor<2, dim> AlR = Al * R, AjR = Aj * R;
+                const Tensor<1, dim> res = r_loc - Al * l - Aj * j;
+                const double         m   = mesh.fracture_faces[fi].measure;
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    const unsigned int row = n_u + dim * fi + i;
+                    for (unsigned int k = 0; k < dim; ++k)
+                      system_matrix.add(row, n_u + dim * fi + k, AlR[i][k]);
+                    for (const auto &e : coupling[fi])
+                      if (!constraints_hom.is_constrained(e.dof))
+                        system_matrix.add(row, e.dof, AjR[i][e.component] * e.value / m);
+                    rhs(row) = res[i];
+                  }
+              }
+          }
+          {
+            TimerOutput::Scope       t(timer, "Mechanics: factorization and solve");
+            SparseDirectUMFPACK      direct;
+            direct.initialize(system_matrix);
+            direct.vmult(delta, rhs);
+          }
+          for (unsigned int i = 0; i < n_u; ++i)
+            u(i) += delta(i);
+          for (unsigned int i = 0; i < lambda.size(); ++i)
+            lambda(i) += delta(n_u + i);
+          const double res = relative_residual();
+          residual_history.push_back(res);
+          progress << "    contact iteration " << iterations << ": relative residual "
+                   << std::scientific << std::setprecision(3) << res << std::defaultfloat
+                   << std::endl;
+          if (res <= prm.tolerance)
+            {
+              converged = true;
+              return;
+            }
+        }
+      iterations = prm.max_iterations;
+      std::ostringstream s;
+      s << "contact solver ("
+        << (prm.method == ContactMethod::active_set ? "active set" : "semismooth newton")
+        << ") did not converge in " << prm.max_iterations
+        << " iterations; last relative residual " << std::scientific << std::setprecision(3)
+        << residual_history.back();
+      throw SolverFailure(s.str());
+    }
+
+    template <int dim>
+    SymmetricTensor<2, dim>
+    ContactProblem<dim>::stress(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                const Point<dim> &unit_point) const
+    {
+      const Quadrature<dim> q(unit_point);
+      FEValues<dim>         fv(mesh.mapping(), fe, q, update_gradients);
+      fv.reinit(cell);
+      std::vector<SymmetricTensor<2, dim>> eps(1);
+      fv[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(u, eps);
+      const double E = prm.young_modulus, nu = prm.poisson_ratio;
+      const double mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu));
+      SymmetricTensor<2, dim> s = 2 * mu * eps[0] + lam * trace(eps[0]) * unit_symmetric_tensor<dim>();
+      if (!prm.pre_stress.empty())
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            s[i][j] += prm.pre_stress[i * dim + j];
+      return s;
+    }
+
+    template class ContactProblem<2>;
+    template class ContactProblem<3>;
+  } // namespace mechanics
+} // namespace porofrac

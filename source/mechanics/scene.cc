@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/utilities.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/mechanics/contact_problem.h>
+#include <porofrac/mechanics/scene.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    using namespace dealii;
+
+    void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mechanics");
+      prm.declare_entry("Young modulus", "25e9", Patterns::Double(), "E (Pa).");
+      prm.declare_entry("Poisson ratio", "0.25", Patterns::Double(),
+                        "nu, in (-1, 0.5). 2D is plane strain.");
+      prm.declare_entry("Solver", "active set", Patterns::Selection("active set|semismooth newton"),
+                        "Contact solver: the active-set method of Section 5.1, or the "
+                        "regularized semi-smooth Newton method (specs.md 3a).");
+      prm.declare_entry("Complementarity parameter c", "1e9", Patterns::Double(),
+                        "c > 0 in the complementarity functions (25)-(26) (Pa/m).");
+      prm.declare_entry("Initial guess", "stick", Patterns::Selection("open|stick"),
+                        "open: lambda = 0, u = 0; stick: lambda_n = Initial normal multiplier, "
+                        "lambda_tau = 0, u = 0.");
+      prm.declare_entry("Initial normal multiplier", "100", Patterns::Double(),
+                        "lambda_n of the stick initial guess (Pa).");
+      prm.declare_entry("Max iterations", "50", Patterns::Integer(1), "Contact iterations.");
+      prm.declare_entry("Tolerance", "1e-6", Patterns::Double(),
+                        "Relative residual of the contact iterations.");
+      prm.declare_entry("Dirichlet", "", Patterns::Anything(),
+                        "Prescribed displacement components per outer boundary id, "
+                        "'id: x=expr, y=expr; id: ...' (muparser in x, y, z).");
+      prm.declare_entry("Traction", "", Patterns::Anything(),
+                        "Traction vector per boundary id, 'id: x=expr, y=expr; ...' (Pa).");
+      prm.declare_entry("Normal pressure", "", Patterns::Anything(),
+                        "Pressure p per boundary id (traction -p n), 'id: expr; id: expr'.");
+      prm.declare_entry("Point constraints", "", Patterns::Anything(),
+                        "Components fixed at mesh vertices, '(px, py): x=value; (px, py): y=value'. "
+                        "Every point must be a vertex of the mesh.");
+      prm.declare_entry("Friction coefficient", "0", Patterns::Anything(),
+                        "F >= 0 per fracture, 'id: expr; id: expr', or one expression for all; "
+                        "muparser in x, y (, z) and d, the distance to the fracture's tips.");
+      prm.declare_entry("Body force", "", Patterns::Anything(),
+                        "Comma-separated components (muparser in x, y, z), empty for zero.");
+      prm.declare_entry("Pre-stress", "", Patterns::Anything(),
+                        "Constant pre-stress, dim*dim comma-separated components row by row "
+                        "(Pa), empty for zero.");
+      prm.declare_entry("Analytical solution", "none", Patterns::Selection("none|single fracture"),
+                        "Errors against the analytical solution of Section 5.2.1.");
+      prm.declare_entry("Remote stress", "1e8", Patterns::Double(),
+                        "5.2.1: remote compression sigma (Pa).");
+      prm.declare_entry("Fracture angle", "20", Patterns::Double(),
+                        "5.2.1: angle psi of the fracture to the x axis (degrees).");
+      prm.declare_entry("Fracture half length", "1", Patterns::Double(), "5.2.1: l (m).");
+      prm.leave_subsection();
+    }
+
+    ContactParameters
+    parse_parameters(const ParameterHandler &prm, const unsigned int dim)
+    {
+      const std::vector<std::string> p = {"Mechanics"};
+      auto get_double = [&](const std::string &n) {
+        return Utilities::string_to_double(prm.get(p, n));
+      };
+      ContactParameters r;
+      r.young_modulus = get_double("Young modulus");
+      r.poisson_ratio = get_double("Poisson ratio");
+      check_input(r.young_modulus > 0, "Mechanics/Young modulus", "must be positive");
+      check_input(r.poisson_ratio < 0.5 && r.poisson_ratio > -1, "Mechanics/Poisson ratio",
+                  "must be below 0.5 and above -1");
+      r.method = prm.get(p, "Solver") == "active set" ? ContactMethod::active_set :
+                                                        ContactMethod::semismooth_newton;
+      r.c = get_double("Complementarity parameter c");
+      check_input(r.c > 0, "Mechanics/Complementarity parameter c", "must be positive");
+      r.stick_guess      = prm.get(p, "Initial guess") == "stick";
+      r.initial_lambda_n = get_double("Initial normal multiplier");
+      r.max_iterations   = Utilities::string_to_int(prm.get(p, "Max iterations"));
+      r.tolerance        = get_double("Tolerance");
+      check_input(r.tolerance > 0, "Mechanics/Tolerance", "must be positive");
+      r.dirichlet = parse_component_map(prm.get(p, "Dirichlet"), dim, "Mechanics/Dirichlet");
+      r.traction  = parse_component_map(prm.get(p, "Traction"), dim, "Mechanics/Traction");
+      for (const auto &[id, e] :
+           parse_scalar_map(prm.get(p, "Normal pressure"), "Mechanics/Normal pressure"))
+        {
+          check_input(id != numbers::invalid_unsigned_int, "Mechanics/Normal pressure",
+                      "expected 'id: expression'");
+          r.pressure[id] = e;
+        }
+      r.point_constraints = parse_point_constraints(prm.get(p, "Point constraints"), dim,
+                                                    "Mechanics/Point constraints");
+      for (const auto &[id, e] :
+           parse_scalar_map(prm.get(p, "Friction coefficient"), "Mechanics/Friction coefficient"))
+        if (id == numbers::invalid_unsigned_int)
+          r.friction_all = e;
+        else
+          r.friction[id] = e;
+      const std::string bf = prm.get(p, "Body force");
+      if (!Utilities::trim(bf).empty())
+        {
+          r.body_force = Utilities::split_string_list(bf, ',');
+          check_input(r.body_force.size() == dim, "Mechanics/Body force",
+                      "needs " + std::to_string(dim) + " components");
+        }
+      const std::string ps = prm.get(p, "Pre-stress");
+      if (!Utilities::trim(ps).empty())
+        {
+          for (const auto &s : Utilities::split_string_list(ps, ','))
+            r.pre_stress.push_back(Utilities::string_to_double(s));
+          check_input(r.pre_stress.size() == dim * dim, "Mechanics/Pre-stress",
+                      "needs " + std::to_string(dim * dim) + " components");
+        }
+      return r;
+    }
+
+    namespace
+    {
+      const char *
+      state_name(const FaceState s)
+      {
+        return s == FaceState::open ? "open" : (s == FaceState::stick ? "stick" : "slip");
+      }
+    } // namespace
+
+    template <int dim>
+    void
+    run_scene(const ParameterHandler &prm, const geometry::CutMesh<dim> &mesh,
+              io::RunContext &context)
+    {
+      const ContactParameters cp = parse_parameters(prm, dim);
+      context.progress << "*** Contact mechanics" << std::endl;
+      ContactProblem<dim> problem(mesh, cp, context.progress, context.timer);
+      problem.setup();
+      context.report << "Mechanics: " << problem.n_dofs() << " dofs ("
+                     << problem.n_displacement_dofs() << " displacement, "
+                     << problem.n_dofs() - problem.n_displacement_dofs() << " multiplier)"
+                     << std::endl;
+      context.summary["n_dofs_mechanics"] = problem.n_dofs();
+      problem.solve();
+
+      unsigned int counts[3] = {0, 0, 0};
+      for (unsigned int f = 0; f < mesh.fracture_faces.size(); ++f)
+        ++counts[static_cast<unsigned int>(problem.state(f))];
+      const std::string solver = prm.get({"Mechanics"}, "Solver");
+      context.report << "Mechanics: solver " << solver << ", "
+                     << prm.get({"Mechanics"}, "Initial guess") << " guess, c = "
+                     << std::scientific << std::setprecision(1) << cp.c << std::defaultfloat
+                     << ": converged in " << problem.iterations << " iterations" << std::endl;
+      context.report << "Mechanics: faces open " << counts[0] << ", stick " << counts[1]
+                     << ", slip " << counts[2] << std::endl;
+
+      io::Json m = io::Json::object();
+      m["solver"]               = solver;
+      m["initial_guess"]        = prm.get({"Mechanics"}, "Initial guess");
+      m["c"]                    = cp.c;
+      m["nonlinear_iterations"] = problem.iterations;
+      m["converged"]            = problem.converged;
+      m["n_open"]               = counts[0];
+      m["n_stick"]              = counts[1];
+      m["n_slip"]               = counts[2];
+      m["residuals"]            = problem.residual_history;
+      context.summary["mechanics"] = m;
+
+      // fractures.csv
+      {
+        TimerOutput::Scope t(context.timer, "Output: mechanics");
+        std::ofstream      csv(context.path("fractures.csv"));
+        csv << "fracture_id,face_id,s,x,y,jump_n,jump_t,lambda_n,lambda_t,state,aperture\n";
+        csv << std::setprecision(10);
+        for (const auto &face : mesh.fracture_faces)
+          {
+            const Tensor<2, dim> R = problem.frame(face.index);
+            const Tensor<1, dim> j = R * problem.jump(face.index);
+            const Tensor<1, dim> l = R * problem.multiplier(face.index);
+            double               jt = j[1], lt = l[1];
+            if (dim == 3)
+              {
+                jt = std::hypot(j[1], j[dim - 1]);
+                lt = std::hypot(l[1], l[dim - 1]);
+              }
+            csv << face.fracture_id << ',' << face.index << ',' << face.abscissa << ','
+                << face.centre[0] << ',' << face.centre[1] << ',' << j[0] << ',' << jt << ','
+                << l[0] << ',' << lt << ',' << state_name(problem.state(face.index)) << ','
+                << std::max(0., -j[0]) << '\n';
+          }
+        if (context.output_format != "none")
+          {
+            DataOut<dim> data_out;
+            data_out.attach_dof_handler(problem.get_dof_handler());
+            std::vector<DataComponentInterpretation::DataComponentInterpretation> interp(
+              dim, DataComponentInterpretation::component_is_part_of_vector);
+            data_out.add_data_vector(problem.displacement(),
+                                     std::vector<std::string>(dim, "displacement"),
+                                     DataOut<dim>::type_dof_data, interp);
+            data_out.build_patches(mesh.mapping(), 2);
+            std::ofstream out(context.path("displacement.vtu"));
+            data_out.write_vtu(out);
+          }
+      }
+
+      // Section 5.2.1: analytical solution, central 90 % of the fracture.
+      if (prm.get({"Mechanics"}, "Analytical solution") == "single fracture")
+        {
+          const std::vector<std::string> p     = {"Mechanics"};
+          const double sigma = Utilities::string_to_double(prm.get(p, "Remote stress"));
+          const double psi =
+            Utilities::string_to_double(prm.get(p, "Fracture angle")) * numbers::PI / 180.;
+          const double ell = Utilities::string_to_double(prm.get(p, "Fracture half length"));
+          const double E = cp.young_modulus, nu = cp.poisson_ratio;
+          const double lambda_n = sigma * std::sin(psi) * std::sin(psi);
+          double       e_t = 0, n_t = 0, e_n = 0, n_n = 0, max_jn = 0;
+          for (const auto &face : mesh.fracture_faces)
+            {
+              const double tau = face.abscissa; // from the first point of the fracture
+              if (tau < 0.1 * ell || tau > 1.9 * ell)
+                continue;
+              const double F = problem.friction(face.index);
+              // specs.md Corrections 1: plane-strain prefactor 4(1 - nu^2)/E.
+              const double slip = 4 * (1 - nu * nu) / E * sigma * std::sin(psi) *
+                                  (std::cos(psi) - F * std::sin(psi)) *
+                                  std::sqrt(std::max(0., ell * ell - (ell - tau) * (ell - tau)));
+              const Tensor<2, dim> R = problem.frame(face.index);
+              const Tensor<1, dim> j = R * problem.jump(face.index);
+              const Tensor<1, dim> l = R * problem.multiplier(face.index);
+              e_t += face.measure * std::pow(std::abs(j[1]) - slip, 2);
+              n_t += face.measure * slip * slip;
+              e_n += face.measure * std::pow(l[0] - lambda_n, 2);
+              n_n += face.measure * lambda_n * lambda_n;
+              max_jn = std::max(max_jn, std::abs(j[0]));
+            }
+          const double jt_err = std::sqrt(e_t / n_t), ln_err = std::sqrt(e_n / n_n);
+          context.report << "Mechanics: 5.2.1 errors (central 90 %): jump_t rel L2 "
+                         << std::scientific << std::setprecision(3) << jt_err
+                         << ", lambda_n rel L2 " << ln_err << std::defaultfloat << std::endl;
+          io::Json e = io::Json::object();
+          e["jump_t_rel_l2"]    = jt_err;
+          e["lambda_n_rel_l2"]  = ln_err;
+          e["max_abs_jump_n"]   = max_jn;
+          context.summary["errors"] = e;
+        }
+    }
+
+    template void
+    run_scene<2>(const ParameterHandler &, const geometry::CutMesh<2> &, io::RunContext &);
+    template void
+    run_scene<3>(const ParameterHandler &, const geometry::CutMesh<3> &, io::RunContext &);
+  } // namespace mechanics
+} // namespace porofrac
