@@ -182,7 +182,7 @@ namespace porofrac
             for (unsigned int i = 1; i < dim; ++i)
               {
                 A_lambda[i][i] = 1;
-                A_lambda[i][0] = -F * a[i] / na;
+                A_lambda[i][0] = (na > 0 ? -F * a[i] / na : 0.);
               }
             return st;
           }
