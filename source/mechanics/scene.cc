@@ -157,6 +157,28 @@ namespace porofrac
       context.report << "Mechanics: faces open " << counts[0] << ", stick " << counts[1]
                      << ", slip " << counts[2] << std::endl;
 
+      // Ranges of the face values (local frame), for tests and logs.
+      double jn_min = 1e300, jn_max = -1e300, jt_max = 0, ln_min = 1e300, ln_max = -1e300,
+             lt_max = 0;
+      for (const auto &face : mesh.fracture_faces)
+        {
+          const Tensor<2, dim> R = problem.frame(face.index);
+          const Tensor<1, dim> j = R * problem.jump(face.index);
+          const Tensor<1, dim> l = R * problem.multiplier(face.index);
+          jn_min = std::min(jn_min, j[0]);
+          jn_max = std::max(jn_max, j[0]);
+          ln_min = std::min(ln_min, l[0]);
+          ln_max = std::max(ln_max, l[0]);
+          jt_max = std::max(jt_max, LocalContactLaw<dim>::tangential(j).norm());
+          lt_max = std::max(lt_max, LocalContactLaw<dim>::tangential(l).norm());
+        }
+      if (!mesh.fracture_faces.empty())
+        context.report << std::scientific << std::setprecision(3)
+                       << "Mechanics: jump_n in [" << jn_min << ", " << jn_max
+                       << "], max |jump_t| " << jt_max << "\n"
+                       << "Mechanics: lambda_n in [" << ln_min << ", " << ln_max
+                       << "], max |lambda_t| " << lt_max << std::defaultfloat << std::endl;
+
       io::Json m = io::Json::object();
       m["solver"]               = solver;
       m["initial_guess"]        = prm.get({"Mechanics"}, "Initial guess");
