@@ -66,6 +66,7 @@ main()
   prm.fracture_mesh_size  = 0.075;
   prm.transition_distance = 0.1;
   prm.global_refinements  = 0;
+  prm.delaunay_flips      = false;
   prm.algorithm           = "delaunay";
   auto raw    = geometry::mesh_network(geometry::network_from_parameters(prm), prm);
   auto mirror = raw;
