@@ -122,6 +122,7 @@ namespace porofrac
               }
             else
               {
+                J_lambda[i][i] += F * bb;
                 J_lambda[i][0] += lt[i] * F;
                 J_jump[i][0] += lt[i] * F * c;
               }
