@@ -54,6 +54,9 @@ namespace porofrac
       prm.declare_entry("Pre-stress", "", Patterns::Anything(),
                         "Constant pre-stress, dim*dim comma-separated components row by row "
                         "(Pa), empty for zero.");
+      prm.declare_entry("Report stress range", "false", Patterns::Bool(),
+                        "Print the range of each stress component at the cell centroids (patch "
+                        "tests).");
       prm.declare_entry("Analytical solution", "none", Patterns::Selection("none|single fracture"),
                         "Errors against the analytical solution of Section 5.2.1.");
       prm.declare_entry("Remote stress", "1e8", Patterns::Double(),
@@ -178,6 +181,31 @@ namespace porofrac
                        << "], max |jump_t| " << jt_max << "\n"
                        << "Mechanics: lambda_n in [" << ln_min << ", " << ln_max
                        << "], max |lambda_t| " << lt_max << std::defaultfloat << std::endl;
+
+      if (prm.get({"Mechanics"}, "Report stress range") == "true")
+        {
+          Point<dim> centroid;
+          for (unsigned int d = 0; d < dim; ++d)
+            centroid[d] = 1. / (dim + 1);
+          SymmetricTensor<2, dim> smin, smax;
+          bool                    first = true;
+          for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
+            {
+              const SymmetricTensor<2, dim> st = problem.stress(cell, centroid);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int k = i; k < dim; ++k)
+                  {
+                    smin[i][k] = first ? st[i][k] : std::min(smin[i][k], st[i][k]);
+                    smax[i][k] = first ? st[i][k] : std::max(smax[i][k], st[i][k]);
+                  }
+              first = false;
+            }
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int k = i; k < dim; ++k)
+              context.report << "Mechanics: stress_" << "xyz"[i] << "xyz"[k] << " in ["
+                             << std::scientific << std::setprecision(4) << smin[i][k] << ", "
+                             << smax[i][k] << "]" << std::defaultfloat << std::endl;
+        }
 
       io::Json m = io::Json::object();
       m["solver"]               = solver;
