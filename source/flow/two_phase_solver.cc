@@ -289,7 +289,12 @@ namespace porofrac
               {
                 const double dpw  = -update(dof(i, 0));
                 double       dpc  = -update(dof(i, 1)) - dpw;
-                const double lim  = parameters.capillary_chop * pressure_scale(grid.nodes[i].rock);
+                // Interface nodes carry both laws (matrix on the cell side): use the larger scale.
+                const double scale =
+                  grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface ?
+                    std::max(pressure_scale(matrix_rock), pressure_scale(fracture_rock)) :
+                    pressure_scale(grid.nodes[i].rock);
+                const double lim = parameters.capillary_chop * scale;
                 if (lim > 0 && std::abs(dpc) > lim)
                   dpc = dpc > 0 ? lim : -lim;
                 // Stop at the kink of S at p_c = 0 when leaving the two-phase region.
