@@ -160,6 +160,15 @@ namespace porofrac
       context.report << "Mechanics: faces open " << counts[0] << ", stick " << counts[1]
                      << ", slip " << counts[2] << std::endl;
 
+      if (mesh.fracture_ids.size() > 1)
+        for (const unsigned int fid : mesh.fracture_ids)
+          {
+            unsigned int c[3] = {0, 0, 0};
+            for (const unsigned int f : mesh.faces_of_fracture.at(fid))
+              ++c[static_cast<unsigned int>(problem.state(f))];
+            context.report << "Mechanics: fracture " << fid << ": open " << c[0] << ", stick "
+                           << c[1] << ", slip " << c[2] << std::endl;
+          }
       // Ranges of the face values (local frame), for tests and logs.
       double jn_min = 1e300, jn_max = -1e300, jt_max = 0, ln_min = 1e300, ln_max = -1e300,
              lt_max = 0;
