@@ -76,7 +76,14 @@ namespace porofrac
       if (p_c <= 0)
         return 0.;
       if (type == Type::corey)
-        return R - (R + p_c) * std::exp(-p_c / R); // specs.md 1.2
+        {
+          // U = R - (R + p_c) exp(-p_c/R) (specs.md 1.2), written without the cancellation that
+          // loses all digits for p_c << R (the matrix at p_c ~ 1 kPa has R = 2e8 Pa).
+          const double x = p_c / R;
+          if (x < 1e-3)
+            return R * x * x * (0.5 - x * (1. / 3. - x * (0.125 - x / 30.)));
+          return R * (-std::expm1(-x) - x * std::exp(-x));
+        }
       // U = p_c S(p_c) - int_0^{p_c} S; composite 5-point Gauss-Legendre on a graded partition
       // (S'(q) ~ q^(n-1) near 0 is smooth for n > 1).
       static const double xg[5] = {-0.9061798459386640, -0.5384693101056831, 0.,
