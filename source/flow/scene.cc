@@ -225,7 +225,6 @@ namespace porofrac
                    const TwoPhaseSolver<dim> &solver, const std::string &basename,
                    const std::string &format)
       {
-        const auto    &tria = mesh.triangulation;
         const unsigned n    = grid.n_matrix_cells;
         Vector<double> pw(n), pnw(n), pc(n), snw(n);
         for (unsigned int i = 0; i < n; ++i)
@@ -235,21 +234,8 @@ namespace porofrac
             pc[i]  = pnw[i] - pw[i];
             snw[i] = solver.saturation(solver.state, i, matrix_rock);
           }
-        DoFHandler<dim> dof_handler(tria);
-        dof_handler.distribute_dofs(FE_SimplexP<dim>(1));
-        DataOut<dim> data_out;
-        data_out.attach_dof_handler(dof_handler);
-        data_out.add_data_vector(pw, "p_w", DataOut<dim>::type_cell_data);
-        data_out.add_data_vector(pnw, "p_nw", DataOut<dim>::type_cell_data);
-        data_out.add_data_vector(pc, "p_c", DataOut<dim>::type_cell_data);
-        data_out.add_data_vector(snw, "s_nw", DataOut<dim>::type_cell_data);
-        data_out.build_patches(mesh.mapping());
-        std::ofstream out(basename + "." + format);
-        AssertThrow(out, ExcMessage("cannot write '" + basename + "." + format + "'"));
-        if (format == "vtk")
-          data_out.write_vtk(out);
-        else
-          data_out.write_vtu(out);
+        geometry::write_cell_fields(mesh, basename, format,
+                                    {{"p_w", pw}, {"p_nw", pnw}, {"p_c", pc}, {"s_nw", snw}});
 
         geometry::FractureFields fields = {{"p_w", {}}, {"p_nw", {}}, {"p_c", {}}, {"s_nw", {}},
                                            {"aperture", {}}};

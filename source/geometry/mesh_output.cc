@@ -107,13 +107,37 @@ namespace porofrac
 
     template <int dim>
     void
+    write_cell_fields(const CutMesh<dim> &mesh,
+                      const std::string  &basename,
+                      const std::string  &format,
+                      const CellFields   &fields)
+    {
+      if (format == "none")
+        return;
+      DoFHandler<dim> dof_handler(mesh.triangulation);
+      dof_handler.distribute_dofs(FE_SimplexP<dim>(1));
+      DataOut<dim> data_out;
+      data_out.attach_dof_handler(dof_handler);
+      for (const auto &[name, values] : fields)
+        data_out.add_data_vector(values, name, DataOut<dim>::type_cell_data);
+      data_out.build_patches(mesh.mapping());
+      std::ofstream out(basename + "." + format);
+      AssertThrow(out, ExcMessage("cannot write '" + basename + "." + format + "'"));
+      if (format == "vtk")
+        data_out.write_vtk(out);
+      else
+        data_out.write_vtu(out);
+    }
+
+
+
+    template <int dim>
+    void
     write_mesh(const CutMesh<dim> &mesh, const std::string &basename, const std::string &format)
     {
       if (format == "none")
         return;
-      const auto   &tria = mesh.triangulation;
-      DoFHandler<dim> dof_handler(tria);
-      dof_handler.distribute_dofs(FE_SimplexP<dim>(1));
+      const auto    &tria = mesh.triangulation;
       Vector<double> material(tria.n_active_cells()), centre_inside(tria.n_active_cells());
       const auto     centres = cell_circumcentres(tria);
       for (const auto &cell : tria.active_cell_iterators())
@@ -125,17 +149,8 @@ namespace porofrac
           centre_inside[cell->active_cell_index()] =
             contains<dim>(p, centres[cell->active_cell_index()], 1e-10) ? 1 : 0;
         }
-      DataOut<dim> data_out;
-      data_out.attach_dof_handler(dof_handler);
-      data_out.add_data_vector(material, "material_id", DataOut<dim>::type_cell_data);
-      data_out.add_data_vector(centre_inside, "circumcentre_inside", DataOut<dim>::type_cell_data);
-      data_out.build_patches(mesh.mapping());
-      std::ofstream out(basename + "." + format);
-      AssertThrow(out, ExcMessage("cannot write '" + basename + "." + format + "'"));
-      if (format == "vtk")
-        data_out.write_vtk(out);
-      else
-        data_out.write_vtu(out);
+      write_cell_fields(mesh, basename, format,
+                        {{"material_id", material}, {"circumcentre_inside", centre_inside}});
       write_fracture_cells(mesh, basename + "_fractures." + format, format);
     }
 
@@ -147,6 +162,12 @@ namespace porofrac
     template void
     write_fracture_cells<3>(const CutMesh<3> &, const std::string &, const std::string &,
                             const FractureFields &);
+    template void
+    write_cell_fields<2>(const CutMesh<2> &, const std::string &, const std::string &,
+                         const CellFields &);
+    template void
+    write_cell_fields<3>(const CutMesh<3> &, const std::string &, const std::string &,
+                         const CellFields &);
     template void
     write_mesh<2>(const CutMesh<2> &, const std::string &, const std::string &);
     template void

@@ -2,6 +2,8 @@
 #ifndef POROFRAC_GEOMETRY_MESH_OUTPUT_H
 #define POROFRAC_GEOMETRY_MESH_OUTPUT_H
 
+#include <deal.II/lac/vector.h>
+
 #include <porofrac/geometry/cut_mesh.h>
 
 #include <string>
@@ -26,6 +28,17 @@ namespace porofrac
                          const std::string   &filename,
                          const std::string   &format,
                          const FractureFields &fields = {});
+
+    /// Named per-cell values (indexed by active cell index).
+    using CellFields = std::vector<std::pair<std::string, Vector<double>>>;
+
+    /// Writes per-cell fields on the cut mesh to @p basename.vtu (or .vtk, by @p format).
+    template <int dim>
+    void
+    write_cell_fields(const CutMesh<dim>  &mesh,
+                      const std::string   &basename,
+                      const std::string   &format,
+                      const CellFields    &fields);
 
     /// Writes the cut mesh (material id and circumcentre-inside flag per cell) to
     /// @p basename.vtu/.vtk and its fracture faces to @p basename_fractures.vtu/.vtk.
