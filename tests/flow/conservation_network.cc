@@ -15,17 +15,12 @@ using namespace dealii;
 int
 main()
 {
-  const auto mesh = flow_test::unit_square(
-    "1: (0.1, 0.5) (0.9, 0.5); 2: (0.3, 0.2) (0.3, 0.8); 3: (0.7, 0.5) (0.7, 0.2); "
-    "4: (0.0, 0.85) (0.3, 0.9)", 0.1, 0.05);
+  const auto mesh = flow_test::unit_square(flow_test::xt_network, 0.1, 0.05);
   flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0});
   flow_test::set_data(grid);
   const auto rocks = flow_test::corey_rocks();
   // Tight Newton tolerances, so that the node balances are checked to round-off.
-  flow::NewtonParameters newton;
-  newton.residual_tolerance = 1e-13;
-  newton.update_tolerance   = 1e-15;
-  flow::TwoPhaseSolver<2> solver(grid, rocks, newton);
+  flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
   const double pc_in_m = rocks[0].saturation.inverse(0.5, "test");
   const double pc_in_f = rocks[1].saturation.inverse(0.9, "test");
   solver.matrix_dirichlet   = {{0, {{2e5 - pc_in_m, 2e5}}}, {1, {{1e5, 1e5}}}};

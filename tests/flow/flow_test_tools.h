@@ -34,6 +34,21 @@ namespace flow_test
     return geometry::make_cut_mesh<2>(prm);
   }
 
+  /// An X and a T intersection, a corner-free network reaching the boundary (fracture 4).
+  inline const char *xt_network =
+    "1: (0.1, 0.5) (0.9, 0.5); 2: (0.3, 0.2) (0.3, 0.8); 3: (0.7, 0.5) (0.7, 0.2); "
+    "4: (0.0, 0.85) (0.3, 0.9)";
+
+  /// Newton tolerances tight enough that balances are checked to round-off.
+  inline flow::NewtonParameters
+  tight_newton()
+  {
+    flow::NewtonParameters newton;
+    newton.residual_tolerance = 1e-13;
+    newton.update_tolerance   = 1e-15;
+    return newton;
+  }
+
   /// Corey matrix (R = 1e4 Pa) and fracture (R = 1e3 Pa), linear k_r, mu_w = 1e-3, mu_nw = 1e-4.
   inline std::array<flow::RockType, 2>
   corey_rocks()

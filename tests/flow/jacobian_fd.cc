@@ -16,9 +16,7 @@ using namespace dealii;
 int
 main()
 {
-  const auto mesh = flow_test::unit_square(
-    "1: (0.1, 0.5) (0.9, 0.5); 2: (0.3, 0.2) (0.3, 0.8); 3: (0.7, 0.5) (0.7, 0.2); "
-    "4: (0.0, 0.85) (0.3, 0.9)", 0.2, 0.1);
+  const auto mesh = flow_test::unit_square(flow_test::xt_network, 0.2, 0.1);
   flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0});
   flow_test::set_data(grid);
   auto rocks = flow_test::corey_rocks();

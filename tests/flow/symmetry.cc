@@ -28,10 +28,7 @@ namespace
     flow::TpfaGrid<2> grid(mesh, false, {inlet, outlet}, {});
     flow_test::set_data(grid);
     const auto              rocks = flow_test::corey_rocks();
-    flow::NewtonParameters  newton;
-    newton.residual_tolerance = 1e-13;
-    newton.update_tolerance   = 1e-15;
-    flow::TwoPhaseSolver<2> solver(grid, rocks, newton);
+    flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
     const double pc_in = rocks[0].saturation.inverse(0.5, "test");
     solver.matrix_dirichlet = {{inlet, {{2e5 - pc_in, 2e5}}}, {outlet, {{1e5, 1e5}}}};
     for (auto &p : solver.state)
