@@ -69,7 +69,31 @@ namespace porofrac
                   "must be below 0.5 and above -1");
       check_input(prm.tolerance > 0, "Mechanics/Tolerance", "must be positive");
       check_input(prm.max_iterations > 0, "Mechanics/Max iterations", "must be positive");
+      check_input(!prm.axisymmetric || dim == 2, "Mechanics/Axisymmetric",
+                  "the axisymmetric mode needs a 2D radial section (Dimension = 2)");
+      check_input(prm.axisymmetric || prm.pre_stress_hoop == 0, "Mechanics/Pre-stress hoop",
+                  "a hoop pre-stress needs Axisymmetric = true");
+      if (prm.axisymmetric)
+        for (const auto &v : mesh.triangulation.get_vertices())
+          if (v[1] < 0)
+            {
+              std::ostringstream m;
+              m << "the radial section must lie in r = y >= 0, but the mesh has the vertex (" << v
+                << ")";
+              throw InputError("Mechanics/Axisymmetric", m.str());
+            }
     }
+
+    namespace
+    {
+      /// Weight of the integrals: 2 pi r in axisymmetric mode (r = second coordinate), else 1.
+      template <int dim>
+      double
+      measure_weight(const bool axisymmetric, const Point<dim> &p)
+      {
+        return axisymmetric ? 2 * numbers::PI * p[1] : 1.;
+      }
+    } // namespace
 
     template <int dim>
     unsigned int
@@ -169,8 +193,9 @@ namespace porofrac
       // Coupling int_sigma lambda . [v] (paper eq. (10)), [v] = v+ - v-.
       const QGaussSimplex<dim - 1> face_quadrature(3);
       FEFaceValues<dim>            fe_face(mesh.mapping(), fe, face_quadrature,
-                                update_values | update_JxW_values);
+                                update_values | update_quadrature_points | update_JxW_values);
       coupling.assign(mesh.fracture_faces.size(), {});
+      face_measures.assign(mesh.fracture_faces.size(), 0.);
       for (const auto &face : mesh.fracture_faces)
         {
           std::map<std::pair<types::global_dof_index, unsigned int>, double> entries;
@@ -182,6 +207,10 @@ namespace porofrac
               fe_face.reinit(cell, face.face_no[side]);
               cell->get_dof_indices(local);
               const double sign = (side == geometry::plus ? 1. : -1.);
+              if (side == geometry::plus)
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  face_measures[face.index] +=
+                    measure_weight(prm.axisymmetric, fe_face.quadrature_point(q)) * fe_face.JxW(q);
               for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
                 {
                   if (!fe.has_support_on_face(i, face.face_no[side]))
@@ -189,12 +218,14 @@ namespace porofrac
                   const unsigned int comp = fe.system_to_component_index(i).first;
                   double             v    = 0;
                   for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                    v += fe_face.shape_value_component(i, q, comp) * fe_face.JxW(q);
+                    v += fe_face.shape_value_component(i, q, comp) *
+                         measure_weight(prm.axisymmetric, fe_face.quadrature_point(q)) *
+                         fe_face.JxW(q);
                   entries[{local[i], comp}] += sign * v;
                 }
             }
           for (const auto &[key, v] : entries)
-            if (std::abs(v) > 1e-14 * face.measure)
+            if (std::abs(v) > 1e-14 * face_measures[face.index])
               coupling[face.index].push_back({key.first, key.second, v});
           for (unsigned int i = 0; i < dim; ++i)
             {
@@ -213,6 +244,7 @@ namespace porofrac
       base_matrix.reinit(sparsity);
       system_matrix.reinit(sparsity);
       f.reinit(n_u);
+      f_fixed.reinit(n_u);
       u.reinit(n_u);
       lambda.reinit(dim * mesh.fracture_faces.size());
 
@@ -290,34 +322,53 @@ namespace porofrac
       Vector<double>                       cell_rhs(n);
       std::vector<types::global_dof_index> local(n);
       std::vector<SymmetricTensor<2, dim>> eps(n);
+      std::vector<double>                  eps_hoop(n), div(n);
       Vector<double>                       value(dim);
+      Vector<double>                       cell_div(n);
+      const bool                           axi = prm.axisymmetric;
       K_full = 0;
       base_matrix = 0;
       f = 0;
+      divergence.assign(mesh.triangulation.n_active_cells(), {});
+      cell_measures.assign(mesh.triangulation.n_active_cells(), 0.);
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
           fe_values.reinit(cell);
           cell_matrix = 0;
           cell_rhs    = 0;
+          cell_div    = 0;
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
-              for (unsigned int i = 0; i < n; ++i)
-                eps[i] = fe_values[disp].symmetric_gradient(i, q);
-              if (body)
-                body->vector_value(fe_values.quadrature_point(q), value);
+              const Point<dim> &x  = fe_values.quadrature_point(q);
+              // Axisymmetric: integrals over the ring, weight 2 pi r; strain gains the hoop
+              // component u_r / r (r = x[1], radial component 1).
+              const double      JxW = measure_weight(axi, x) * fe_values.JxW(q);
+              cell_measures[cell->active_cell_index()] += JxW;
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  const SymmetricTensor<2, dim> s_i = 2 * mu * eps[i] + lam * trace(eps[i]) *
-                                                                          unit_symmetric_tensor<dim>();
+                  eps[i]      = fe_values[disp].symmetric_gradient(i, q);
+                  eps_hoop[i] = (axi && fe.system_to_component_index(i).first == 1) ?
+                                  fe_values.shape_value(i, q) / x[1] :
+                                  0.;
+                  div[i] = trace(eps[i]) + eps_hoop[i];
+                }
+              if (body)
+                body->vector_value(x, value);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const SymmetricTensor<2, dim> s_i =
+                    2 * mu * eps[i] + lam * div[i] * unit_symmetric_tensor<dim>();
+                  const double s_i_hoop = 2 * mu * eps_hoop[i] + lam * div[i];
                   for (unsigned int j = 0; j < n; ++j)
-                    cell_matrix(i, j) += (s_i * eps[j]) * fe_values.JxW(q);
-                  double r = -(sigma0 * eps[i]);
+                    cell_matrix(i, j) += (s_i * eps[j] + s_i_hoop * eps_hoop[j]) * JxW;
+                  double r = -(sigma0 * eps[i]) - prm.pre_stress_hoop * eps_hoop[i];
                   if (body)
                     {
                       const unsigned int c = fe.system_to_component_index(i).first;
                       r += value[c] * fe_values.shape_value(i, q);
                     }
-                  cell_rhs(i) += r * fe_values.JxW(q);
+                  cell_rhs(i) += r * JxW;
+                  cell_div(i) += div[i] * JxW;
                 }
             }
           for (const unsigned int fn : cell->face_indices())
@@ -330,6 +381,8 @@ namespace porofrac
                 fe_face.reinit(cell, fn);
                 for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                   {
+                    const double   JxW =
+                      measure_weight(axi, fe_face.quadrature_point(q)) * fe_face.JxW(q);
                     Tensor<1, dim> t;
                     if (tr)
                       {
@@ -343,16 +396,21 @@ namespace porofrac
                     for (unsigned int i = 0; i < n; ++i)
                       {
                         const unsigned int c = fe.system_to_component_index(i).first;
-                        cell_rhs(i) += t[c] * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                        cell_rhs(i) += t[c] * fe_face.shape_value(i, q) * JxW;
                       }
                   }
               }
           cell->get_dof_indices(local);
           K_full.add(local, cell_matrix);
           for (unsigned int i = 0; i < n; ++i)
-            f(local[i]) += cell_rhs(i);
+            {
+              f(local[i]) += cell_rhs(i);
+              if (cell_div(i) != 0)
+                divergence[cell->active_cell_index()].emplace_back(local[i], cell_div(i));
+            }
           constraints_hom.distribute_local_to_global(cell_matrix, local, base_matrix);
         }
+      f_fixed = f;
       assemble_coupling();
     }
 
@@ -396,7 +454,7 @@ namespace porofrac
       Tensor<1, dim> j;
       for (const auto &e : coupling[fi])
         j[e.component] += e.value * u(e.dof);
-      return j / mesh.fracture_faces[fi].measure;
+      return j / face_measures[fi];
     }
 
     template <int dim>
@@ -457,7 +515,7 @@ namespace porofrac
           const Tensor<2, dim>        R = frame(fi);
           const LocalContactLaw<dim> law{friction_values[fi], prm.c};
           const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
-          const double                w = mesh.fracture_faces[fi].measure;
+          const double                w = face_measures[fi];
           c2 += w * law.residual(l, j, true).norm_square();
           l2 += w * l.norm_square();
           cj2 += w * (prm.c * j).norm_square();
@@ -470,21 +528,37 @@ namespace porofrac
 
     template <int dim>
     void
-    ContactProblem<dim>::solve()
+    ContactProblem<dim>::solve(const bool warm_start)
     {
       const unsigned int n_u = dof_handler.n_dofs();
       const unsigned int N   = n_dofs();
-      // Initial guess: u = 0 (plus Dirichlet values); open lambda = 0, or stick lambda_n = given.
-      u = 0;
-      constraints.distribute(u);
-      lambda = 0;
-      if (prm.stick_guess)
-        for (const auto &face : mesh.fracture_faces)
-          for (unsigned int d = 0; d < dim; ++d)
-            lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
-
       residual_history.clear();
       converged = false;
+      if (warm_start && solved_once)
+        {
+          // Start from the previous solution; nothing to do if it still satisfies the tolerance.
+          const double res = relative_residual();
+          if (res <= prm.tolerance)
+            {
+              residual_history.push_back(res);
+              iterations = 0;
+              converged  = true;
+              return;
+            }
+        }
+      else
+        {
+          // Initial guess: u = 0 (plus Dirichlet values); open lambda = 0, or stick
+          // lambda_n = given.
+          u = 0;
+          constraints.distribute(u);
+          lambda = 0;
+          if (prm.stick_guess)
+            for (const auto &face : mesh.fracture_faces)
+              for (unsigned int d = 0; d < dim; ++d)
+                lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
+        }
+      solved_once = true;
       Vector<double> rhs(N), delta(N);
       for (iterations = 1; iterations <= prm.max_iterations; ++iterations)
         {
@@ -512,7 +586,7 @@ namespace porofrac
                 law.rows(prm.method, l, j, Al, Aj, r_loc);
                 const Tensor<2, dim> AlR = Al * R, AjR = Aj * R;
                 const Tensor<1, dim> res = r_loc - Al * l - Aj * j;
-                const double         m   = mesh.fracture_faces[fi].measure;
+                const double         m   = face_measures[fi];
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const unsigned int row = n_u + dim * fi + i;
@@ -554,6 +628,67 @@ namespace porofrac
         << " iterations; last relative residual " << std::scientific << std::setprecision(3)
         << residual_history.back();
       throw SolverFailure(s.str());
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::set_equivalent_pressures(const std::vector<double> &p_E_matrix,
+                                                  const std::vector<double> &p_E_fracture,
+                                                  const double               biot)
+    {
+      AssertDimension(p_E_matrix.size(), divergence.size());
+      AssertDimension(p_E_fracture.size(), coupling.size());
+      // Eq. (11b) moved to the right-hand side: + int b p_E,m div v - int p_E,f [v]_n.
+      f = f_fixed;
+      for (unsigned int K = 0; K < divergence.size(); ++K)
+        for (const auto &[dof, value] : divergence[K])
+          f(dof) += biot * p_E_matrix[K] * value;
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        {
+          const Tensor<1, dim> &n = mesh.fracture_faces[fi].normal;
+          for (const auto &e : coupling[fi])
+            f(e.dof) -= p_E_fracture[fi] * n[e.component] * e.value;
+        }
+    }
+
+    template <int dim>
+    std::vector<double>
+    ContactProblem<dim>::cell_divergence() const
+    {
+      std::vector<double> result(divergence.size(), 0.);
+      for (unsigned int K = 0; K < divergence.size(); ++K)
+        {
+          for (const auto &[dof, value] : divergence[K])
+            result[K] += value * u(dof);
+          result[K] /= cell_measures[K];
+        }
+      return result;
+    }
+
+    template <int dim>
+    double
+    ContactProblem<dim>::normal_jump(const unsigned int fi) const
+    {
+      return mesh.fracture_faces[fi].normal * jump(fi);
+    }
+
+    template <int dim>
+    double
+    ContactProblem<dim>::elastic_energy() const
+    {
+      Vector<double> Ku(u.size());
+      apply_elasticity(Ku);
+      return 0.5 * (u * Ku);
+    }
+
+    template <int dim>
+    double
+    ContactProblem<dim>::external_work(const Vector<double> &u_old) const
+    {
+      double w = 0;
+      for (unsigned int i = 0; i < u.size(); ++i)
+        w += f_fixed(i) * (u(i) - u_old(i));
+      return w;
     }
 
     template <int dim>

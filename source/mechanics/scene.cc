@@ -4,6 +4,7 @@
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/contact_problem.h>
+#include <porofrac/mechanics/fracture_table.h>
 #include <porofrac/mechanics/scene.h>
 
 #include <cmath>
@@ -52,8 +53,16 @@ namespace porofrac
       prm.declare_entry("Body force", "", Patterns::Anything(),
                         "Comma-separated components (muparser in x, y, z), empty for zero.");
       prm.declare_entry("Pre-stress", "", Patterns::Anything(),
-                        "Constant pre-stress, dim*dim comma-separated components row by row "
-                        "(Pa), empty for zero.");
+                        "Constant pre-stress sigma0, dim*dim comma-separated components row by "
+                        "row (Pa, tension positive: the stress is C eps(u) + sigma0 - b p_E I), "
+                        "empty for zero.");
+      prm.declare_entry("Axisymmetric", "false", Patterns::Bool(),
+                        "2D only: the mesh is the radial section of a body of revolution, with "
+                        "x (first coordinate) along the axis and r = y >= 0; hoop strain u_r/r, "
+                        "integrals weighted by 2 pi r (multipliers stay tractions in Pa).");
+      prm.declare_entry("Pre-stress hoop", "0", Patterns::Double(),
+                        "Axisymmetric only: the sigma0_theta theta component of the pre-stress "
+                        "(Pa; tension positive, like Pre-stress).");
       prm.declare_entry("Report stress range", "false", Patterns::Bool(),
                         "Print the range of each stress component at the cell centroids (patch "
                         "tests).");
@@ -121,17 +130,15 @@ namespace porofrac
           check_input(r.pre_stress.size() == dim * dim, "Mechanics/Pre-stress",
                       "needs " + std::to_string(dim * dim) + " components");
         }
+      r.axisymmetric    = prm.get(p, "Axisymmetric") == "true";
+      r.pre_stress_hoop = get_double("Pre-stress hoop");
+      check_input(!r.axisymmetric || dim == 2, "Mechanics/Axisymmetric",
+                  "the axisymmetric mode needs Dimension = 2");
+      check_input(r.axisymmetric || r.pre_stress_hoop == 0, "Mechanics/Pre-stress hoop",
+                  "a hoop pre-stress needs Axisymmetric = true");
       return r;
     }
 
-    namespace
-    {
-      const char *
-      state_name(const FaceState s)
-      {
-        return s == FaceState::open ? "open" : (s == FaceState::stick ? "stick" : "slip");
-      }
-    } // namespace
 
     template <int dim>
     void
@@ -232,24 +239,8 @@ namespace porofrac
       {
         TimerOutput::Scope t(context.timer, "Output: mechanics");
         std::ofstream      csv(context.path("fractures.csv"));
-        csv << "fracture_id,face_id,s,x,y,jump_n,jump_t,lambda_n,lambda_t,state,aperture\n";
-        csv << std::setprecision(10);
-        for (const auto &face : mesh.fracture_faces)
-          {
-            const Tensor<2, dim> R = problem.frame(face.index);
-            const Tensor<1, dim> j = R * problem.jump(face.index);
-            const Tensor<1, dim> l = R * problem.multiplier(face.index);
-            double               jt = j[1], lt = l[1];
-            if (dim == 3)
-              {
-                jt = std::hypot(j[1], j[dim - 1]);
-                lt = std::hypot(l[1], l[dim - 1]);
-              }
-            csv << face.fracture_id << ',' << face.index << ',' << face.abscissa << ','
-                << face.centre[0] << ',' << face.centre[1] << ',' << j[0] << ',' << jt << ','
-                << l[0] << ',' << lt << ',' << state_name(problem.state(face.index)) << ','
-                << std::max(0., -j[0]) << '\n';
-          }
+        write_fracture_table_header(csv, dim, false);
+        write_fracture_table_rows(csv, problem);
         if (context.output_format != "none")
           {
             DataOut<dim> data_out;

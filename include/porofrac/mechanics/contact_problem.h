@@ -41,9 +41,53 @@ namespace porofrac
       void
       setup();
 
-      /// Runs the contact iterations; throws SolverFailure after max_iterations.
+      /**
+       * Runs the contact iterations; throws SolverFailure after max_iterations. With
+       * @p warm_start (and a previous solve), starts from the current (u, lambda) instead of
+       * the deck's initial guess and returns with 0 iterations if that already satisfies the
+       * tolerance.
+       */
       void
-      solve();
+      solve(const bool warm_start = false);
+
+      /**
+       * Poromechanical loads of paper eq. (11b): the weak form gains - int_Omega b p_E,m div v
+       * + int_Gamma p_E,f [v]_n, with @p p_E_matrix constant per active cell (index
+       * active_cell_index()) and @p p_E_fracture constant per fracture face (CutMesh index).
+       * Only the load vector changes (no reassembly); calling it again replaces the previous
+       * pressures.
+       */
+      void
+      set_equivalent_pressures(const std::vector<double> &p_E_matrix,
+                               const std::vector<double> &p_E_fracture,
+                               const double               biot);
+
+      /// Per active cell: the mean over the cell of div u (weighted by 2 pi r in axisymmetric
+      /// mode, where div u = d_x u_x + d_r u_r + u_r / r), i.e. int_K div u / |K|.
+      std::vector<double>
+      cell_divergence() const;
+      /// Weighted measure of active cell K (2 pi r dA in axisymmetric mode, else |K|).
+      double
+      cell_measure(const unsigned int K) const
+      {
+        return cell_measures[K];
+      }
+      /// Weighted measure of fracture face f (int_sigma 2 pi r ds in axisymmetric mode).
+      double
+      face_measure(const unsigned int f) const
+      {
+        return face_measures[f];
+      }
+      /// [u]_n = n+ . [u]_sigma of face f (<= 0 when admissible; d_f = d_0 - [u]_n).
+      double
+      normal_jump(const unsigned int f) const;
+      /// 1/2 a(u, u), the elastic energy of the current displacement (J).
+      double
+      elastic_energy() const;
+      /// Work of the fixed loads (body force, tractions, pressures, pre-stress; not the
+      /// p_E loads) on u - @p u_old.
+      double
+      external_work(const Vector<double> &u_old) const;
 
       unsigned int
       n_dofs() const;
@@ -122,7 +166,12 @@ namespace porofrac
       SparseMatrix<double> K_full;      ///< unconstrained elasticity (residuals)
       SparseMatrix<double> base_matrix; ///< constrained K + B^T
       SparseMatrix<double> system_matrix;
-      Vector<double>       f;           ///< load vector (unconstrained)
+      Vector<double>       f;           ///< load vector (unconstrained): f_fixed + p_E loads
+      Vector<double>       f_fixed;     ///< the deck's loads only
+      /// Per active cell: (dof, int_K div phi_dof) so that int_K div u = sum value * u(dof).
+      std::vector<std::vector<std::pair<types::global_dof_index, double>>> divergence;
+      std::vector<double> cell_measures, face_measures;
+      bool                solved_once = false;
       Vector<double>       u;           ///< displacement
       Vector<double>       lambda;      ///< dim per face
 

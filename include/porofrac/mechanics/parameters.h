@@ -42,6 +42,10 @@ namespace porofrac
       std::string                         friction_all = "0";
       std::vector<std::string>            body_force; ///< dim expressions (empty: zero)
       std::vector<double>                 pre_stress; ///< dim*dim row-major, constant (empty: 0)
+      /// Axisymmetric mode (2D only): the mesh is the radial section, coordinate 0 = x (axis),
+      /// coordinate 1 = r >= 0; hoop strain u_r / r and integrals weighted by 2 pi r.
+      bool   axisymmetric    = false;
+      double pre_stress_hoop = 0; ///< sigma0_theta theta (Pa), axisymmetric mode only
     };
 
     /**
