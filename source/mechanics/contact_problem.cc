@@ -560,11 +560,12 @@ namespace porofrac
         }
       solved_once = true;
       Vector<double> rhs(N), delta(N);
+      std::vector<Tensor<2, dim>> AlR(coupling.size()), AjR(coupling.size());
       for (iterations = 1; iterations <= prm.max_iterations; ++iterations)
         {
+          bool same_matrix = factorization != nullptr;
           {
             TimerOutput::Scope t(timer, "Mechanics: contact update");
-            system_matrix.copy_from(base_matrix);
             rhs = 0;
             // Mechanical residual f - K u - B^T lambda.
             Vector<double> r(n_u);
@@ -584,26 +585,46 @@ namespace porofrac
                 Tensor<2, dim>              Al, Aj;
                 Tensor<1, dim>              r_loc;
                 law.rows(prm.method, l, j, Al, Aj, r_loc);
-                const Tensor<2, dim> AlR = Al * R, AjR = Aj * R;
                 const Tensor<1, dim> res = r_loc - Al * l - Aj * j;
-                const double         m   = face_measures[fi];
+                AlR[fi]                  = Al * R;
+                AjR[fi]                  = Aj * R;
+                same_matrix = same_matrix && AlR[fi] == factorized_AlR[fi] &&
+                              AjR[fi] == factorized_AjR[fi];
                 for (unsigned int i = 0; i < dim; ++i)
+                  rhs(n_u + dim * fi + i) = res[i];
+              }
+            // The Jacobian only depends on the face rows: when none changed (the active set
+            // method with an unchanged active set, e.g. in warm-started coupled solves), the
+            // factorization is reused.
+            if (!same_matrix)
+              {
+                system_matrix.copy_from(base_matrix);
+                for (unsigned int fi = 0; fi < coupling.size(); ++fi)
                   {
-                    const unsigned int row = n_u + dim * fi + i;
-                    for (unsigned int k = 0; k < dim; ++k)
-                      system_matrix.add(row, n_u + dim * fi + k, AlR[i][k]);
-                    for (const auto &e : coupling[fi])
-                      if (!constraints_hom.is_constrained(e.dof))
-                        system_matrix.add(row, e.dof, AjR[i][e.component] * e.value / m);
-                    rhs(row) = res[i];
+                    const double m = face_measures[fi];
+                    for (unsigned int i = 0; i < dim; ++i)
+                      {
+                        const unsigned int row = n_u + dim * fi + i;
+                        for (unsigned int k = 0; k < dim; ++k)
+                          system_matrix.add(row, n_u + dim * fi + k, AlR[fi][i][k]);
+                        for (const auto &e : coupling[fi])
+                          if (!constraints_hom.is_constrained(e.dof))
+                            system_matrix.add(row, e.dof, AjR[fi][i][e.component] * e.value / m);
+                      }
                   }
               }
           }
           {
-            TimerOutput::Scope       t(timer, "Mechanics: factorization and solve");
-            SparseDirectUMFPACK      direct;
-            direct.initialize(system_matrix);
-            direct.vmult(delta, rhs);
+            TimerOutput::Scope t(timer, "Mechanics: factorization and solve");
+            if (!same_matrix)
+              {
+                factorization = std::make_unique<SparseDirectUMFPACK>();
+                factorization->initialize(system_matrix);
+                factorized_AlR = AlR;
+                factorized_AjR = AjR;
+                ++n_factorizations;
+              }
+            factorization->vmult(delta, rhs);
           }
           for (unsigned int i = 0; i < n_u; ++i)
             u(i) += delta(i);

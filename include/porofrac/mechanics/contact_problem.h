@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -172,6 +173,14 @@ namespace porofrac
       std::vector<std::vector<std::pair<types::global_dof_index, double>>> divergence;
       std::vector<double> cell_measures, face_measures;
       bool                solved_once = false;
+      /// The last LU factorization of the contact Jacobian and the face rows it was built with.
+      std::unique_ptr<SparseDirectUMFPACK> factorization;
+      std::vector<Tensor<2, dim>>          factorized_AlR, factorized_AjR;
+
+    public:
+      /// LU factorizations computed so far (each solve() reuses the last one while no face row
+      /// of the Jacobian changes).
+      unsigned int n_factorizations = 0;
       Vector<double>       u;           ///< displacement
       Vector<double>       lambda;      ///< dim per face
 
