@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/parameters.h>
+#include <porofrac/coupling/scene.h>
 #include <porofrac/geometry/parameters.h>
 #include <porofrac/flow/scene.h>
 #include <porofrac/mechanics/scene.h>
@@ -38,6 +39,7 @@ namespace porofrac
       mechanics::declare_parameters(prm);
       // FLOW HOOK (declare)
       flow::declare_parameters(prm);
+      coupling::declare_parameters(prm);
     }
   } // namespace app
 } // namespace porofrac

@@ -15,6 +15,7 @@
 #include <porofrac/mechanics/scene.h>
 // FLOW HOOK (include)
 #include <porofrac/flow/scene.h>
+#include <porofrac/coupling/scene.h>
 
 #include <filesystem>
 #include <iostream>
@@ -89,7 +90,7 @@ namespace porofrac
           flow::run_scene<dim>(prm, *mesh, context);
         }
       else if (physics == "poromechanics")
-        throw InputError("Physics", "'poromechanics' is not available in this build yet");
+        coupling::run_scene<dim>(prm, *mesh, context);
 
       summary["wall_time_s"]    = wall_clock.wall_time();
       Utilities::System::MemoryStats memory;

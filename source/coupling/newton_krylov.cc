@@ -87,7 +87,10 @@ namespace porofrac
           if (r == 0 || result.relative_increment <= parameters.tolerance ||
               (result.iterations > 1 && result.relative_residual <= parameters.tolerance))
             {
-              result.converged = true;
+              // The last evaluation was at x_prev, with g(x_prev) = x within the tolerance: the
+              // states inside g are those of the accepted Picard iterate.
+              result.converged             = true;
+              result.evaluated_at_solution = true;
               return result;
             }
         }
@@ -166,7 +169,8 @@ namespace porofrac
           result.relative_residual = r0 > 0 ? r / r0 : 0.;
           if (r == 0 || (result.iterations > 0 && result.relative_residual <= parameters.tolerance))
             {
-              result.converged = true;
+              result.converged             = true;
+              result.evaluated_at_solution = true;
               return result;
             }
 

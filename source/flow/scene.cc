@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/flow/model.h>
 #include <porofrac/flow/scene.h>
 #include <porofrac/flow/tpfa_grid.h>
 #include <porofrac/flow/two_phase_solver.h>
@@ -258,75 +259,14 @@ namespace porofrac
     run_scene(const ParameterHandler &prm, const geometry::CutMesh<dim> &mesh,
               io::RunContext &context)
     {
-      const std::vector<std::string> flow = {"Flow"};
-      const double mu_w  = get_double(prm, flow, "Viscosity w");
-      const double mu_nw = get_double(prm, flow, "Viscosity nw");
-      const std::array<RockType, 2> rocks = {
-        {parse_rock(prm, "Matrix", mu_w, mu_nw), parse_rock(prm, "Fracture", mu_w, mu_nw)}};
-      const auto matrix_bc = parse_dirichlet(prm.get({"Flow", "Boundary conditions"}, "Matrix"),
-                                             rocks[0], "Flow/Boundary conditions/Matrix");
-      const auto fracture_bc = parse_dirichlet(prm.get({"Flow", "Boundary conditions"}, "Fracture"),
-                                               rocks[1], "Flow/Boundary conditions/Fracture");
-      std::set<types::boundary_id> matrix_ids, fracture_ids;
-      for (const auto &b : matrix_bc)
-        matrix_ids.insert(b.first);
-      for (const auto &b : fracture_bc)
-        fracture_ids.insert(b.first);
-
-      const double T_final   = get_double(prm, flow, "Final time");
-      const double dt_0      = get_double(prm, flow, "Initial time step");
-      const double dt_max    = get_double(prm, flow, "Maximum time step");
-      const double rho       = get_double(prm, flow, "Time step growth");
-      const unsigned max_cut = Utilities::string_to_int(prm.get(flow, "Maximum time step cuts"));
-      const unsigned output_every = Utilities::string_to_int(prm.get(flow, "Output every"));
-      check_input(T_final > 0, "Flow/Final time", "must be positive");
-      check_input(dt_0 > 0, "Flow/Initial time step", "must be positive");
-      check_input(dt_max > 0, "Flow/Maximum time step", "must be positive");
-      check_input(rho >= 1, "Flow/Time step growth", "must be >= 1");
-
-      NewtonParameters newton;
-      newton.max_iterations     = Utilities::string_to_int(prm.get(flow, "Maximum Newton iterations"));
-      newton.residual_tolerance = get_double(prm, flow, "Residual tolerance");
-      newton.update_tolerance   = get_double(prm, flow, "Update tolerance");
-      newton.mass_tolerance     = get_double(prm, flow, "Mass balance tolerance");
-      newton.capillary_chop     = get_double(prm, flow, "Capillary chop");
-      newton.entry_slope        = prm.get(flow, "Entry slope in Jacobian") == "true";
-
-      context.progress << "*** Flow: building the TPFA connectivity" << std::endl;
-      const bool axisymmetric = prm.get(flow, "Axisymmetric") == "true";
-      TpfaGrid<dim> grid(mesh, axisymmetric, matrix_ids, fracture_ids);
-      const double  phi0 = get_double(prm, {"Flow", "Matrix"}, "Porosity");
-      const double  K0   = get_double(prm, {"Flow", "Matrix"}, "Permeability");
-      check_input(phi0 > 0 && phi0 < 1, "Flow/Matrix/Porosity", "must lie in (0, 1)");
-      check_input(K0 > 0, "Flow/Matrix/Permeability", "must be positive");
-      grid.porosity.assign(grid.n_matrix_cells, phi0);
-      // Kozeny-Carman, explicit in time: frozen porosity in a flow-only scene gives K_0.
-      grid.permeability.assign(grid.n_matrix_cells, kozeny_carman(K0, phi0, phi0));
-      grid.aperture.assign(grid.n_fracture_cells, get_double(prm, {"Flow", "Fracture"}, "Aperture"));
-      grid.normal_transmissibility =
-        get_double(prm, {"Flow", "Fracture"}, "Normal transmissibility");
-      grid.update_transmissibilities();
-      for (const auto id : matrix_ids)
-        check_input(std::count(mesh.outer_boundary_ids.begin(), mesh.outer_boundary_ids.end(), id),
-                    "Flow/Boundary conditions/Matrix",
-                    "boundary id " + std::to_string(id) + " is not on the mesh");
-
-      TwoPhaseSolver<dim> solver(grid, rocks, newton);
+      FlowModel<dim>            model  = make_flow_model<dim>(prm, mesh);
+      TpfaGrid<dim>            &grid   = *model.grid;
+      TwoPhaseSolver<dim>      &solver = *model.solver;
+      const TimeStepping       &ts     = model.stepping;
+      const double              T_final = ts.final_time, dt_0 = ts.initial_step,
+                   dt_max = ts.maximum_step, rho = ts.growth;
+      const unsigned int max_cut = ts.maximum_cuts, output_every = ts.output_every;
       solver.timer = &context.timer;
-      solver.matrix_dirichlet   = matrix_bc;
-      solver.fracture_dirichlet = fracture_bc;
-      const std::array<double, 2> p_m = {{get_double(prm, {"Flow", "Matrix"}, "Initial pressure w"),
-                                          get_double(prm, {"Flow", "Matrix"}, "Initial pressure nw")}};
-      const std::array<double, 2> p_f = {
-        {get_double(prm, {"Flow", "Fracture"}, "Initial pressure w"),
-         get_double(prm, {"Flow", "Fracture"}, "Initial pressure nw")}};
-      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-        solver.state[i] = (grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::matrix ||
-                           grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface) ?
-                            p_m :
-                            p_f;
-      solver.apply_dirichlet(solver.state);
-      solver.old_state = solver.state;
 
       context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
                      << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
@@ -381,6 +321,7 @@ namespace porofrac
           double       dt_step = last ? T_final - t : dt;
           unsigned int cuts    = 0;
           StepResult   result;
+          solver.begin_time_step();
           while (true)
             {
               solver.state = solver.old_state;
@@ -407,7 +348,6 @@ namespace porofrac
           context.progress << "  Flow step " << step << ": t = " << t << " s, dt = " << dt_step
                            << " s, " << result.iterations << " Newton iterations, mass defect "
                            << mass_error << std::endl;
-          solver.old_state = solver.state;
           // dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max) (specs.md 1.1)
           dt = std::min(rho * dt_step, dt_max);
           const bool done = t >= T_final * (1 - 1e-12);

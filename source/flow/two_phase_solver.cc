@@ -97,7 +97,7 @@ namespace porofrac
       // Accumulation |K| phi (S^{n+1} - S^n) (scheme (11a)).
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         {
-          double PV = grid.pore_volume(i);
+          double PV = pore_volume(s, i);
           if (node_dof[i] == numbers::invalid_unsigned_int)
             continue;
           if (PV == 0)
@@ -115,20 +115,32 @@ namespace porofrac
               J->add(dof(i, 0), dof(i, 0), PVv * dS);
               continue;
             }
-          const RockType &rock = rocks[grid.nodes[i].rock];
-          const double    pc   = s[i][1] - s[i][0];
-          const double    dS   = rock.saturation.saturation(pc) -
-                            rock.saturation.saturation(old[i][1] - old[i][0]);
-          const double dSdpc = slope(rock, pc);
-          // phase nw: +dS; phase w: -dS
-          residual(dof(i, 1)) += PV * dS;
-          residual(dof(i, 0)) -= PV * dS;
+          const RockType &rock   = rocks[grid.nodes[i].rock];
+          const double    pc     = s[i][1] - s[i][0];
+          const double    S      = rock.saturation.saturation(pc);
+          const double    S_old  = rock.saturation.saturation(old[i][1] - old[i][0]);
+          const double    PV_old = old_pore_volume.empty() ? PV : old_pore_volume[i];
+          const double    dSdpc  = slope(rock, pc);
+          // (11a): (PV S^alpha)^{n+1} - (PV S^alpha)^n; phase nw: S, phase w: 1 - S.
+          residual(dof(i, 1)) += PV * S - PV_old * S_old;
+          residual(dof(i, 0)) += PV * (1 - S) - PV_old * (1 - S_old);
           if (J)
             {
               J->add(dof(i, 1), dof(i, 1), PV * dSdpc);
               J->add(dof(i, 1), dof(i, 0), -PV * dSdpc);
               J->add(dof(i, 0), dof(i, 1), -PV * dSdpc);
               J->add(dof(i, 0), dof(i, 0), PV * dSdpc);
+              // Biot storage: PV = |K| (phi_base + (p_E - p_E,ref) / M) depends on p_E.
+              if (biot_storage && i < grid.n_matrix_cells)
+                {
+                  const auto   dE    = equivalent_pressure_derivatives(s, i);
+                  const double scale = grid.nodes[i].measure * inverse_biot_modulus;
+                  for (unsigned int q = 0; q < 2; ++q)
+                    {
+                      J->add(dof(i, 1), dof(i, q), S * scale * dE[q]);
+                      J->add(dof(i, 0), dof(i, q), (1 - S) * scale * dE[q]);
+                    }
+                }
             }
         }
       // Fluxes.
@@ -186,24 +198,125 @@ namespace porofrac
 
     template <int dim>
     std::array<double, 2>
-    TwoPhaseSolver<dim>::phase_volumes(const State &s) const
+    TwoPhaseSolver<dim>::phase_volumes(const State &s, const std::vector<double> *pv) const
     {
       std::array<double, 2> m{{0., 0.}};
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         if (!grid.is_dirichlet(i))
           {
-            const double S = saturation(s, i, grid.nodes[i].rock);
-            m[1] += grid.pore_volume(i) * S;
-            m[0] += grid.pore_volume(i) * (1. - S);
+            const double S  = saturation(s, i, grid.nodes[i].rock);
+            const double PV = pv ? (*pv)[i] : pore_volume(s, i);
+            m[1] += PV * S;
+            m[0] += PV * (1. - S);
           }
       return m;
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::begin_time_step()
+    {
+      old_state = state;
+      old_pore_volume.resize(grid.n_nodes());
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        old_pore_volume[i] = pore_volume(old_state, i);
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::set_biot_storage(const std::vector<double> &base,
+                                          const std::vector<double> &reference,
+                                          const double               inverse_modulus,
+                                          const bool                 with_energy)
+    {
+      AssertDimension(reference.size(), grid.n_matrix_cells);
+      biot_storage         = true;
+      p_E_reference        = reference;
+      inverse_biot_modulus = inverse_modulus;
+      capillary_energy     = with_energy;
+      set_porosity_base(base);
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::set_porosity_base(const std::vector<double> &base)
+    {
+      AssertDimension(base.size(), grid.n_matrix_cells);
+      porosity_base = base;
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::equivalent_pressure(const State &s, const unsigned int i) const
+    {
+      // (11d): p_E = p^w + p_c S - U(p_c) (Remark 3.1: without U).
+      const SaturationLaw &law = rocks[grid.nodes[i].rock].saturation;
+      const double         pc  = s[i][1] - s[i][0];
+      return s[i][0] + pc * law.saturation(pc) - (capillary_energy ? law.energy(pc) : 0.);
+    }
+
+    template <int dim>
+    std::array<double, 2>
+    TwoPhaseSolver<dim>::equivalent_pressure_derivatives(const State &s, const unsigned int i) const
+    {
+      // d/dp_c (p_c S - U) = S + p_c S' - U' = S since U' = p_c S'; without U: S + p_c S'.
+      const SaturationLaw &law  = rocks[grid.nodes[i].rock].saturation;
+      const double         pc   = s[i][1] - s[i][0];
+      const double         S    = law.saturation(pc);
+      const double         d_pc = capillary_energy ? S : S + pc * law.derivative(pc);
+      return {{1. - d_pc, d_pc}};
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::porosity(const State &s, const unsigned int K) const
+    {
+      if (!biot_storage)
+        return grid.porosity[K];
+      return porosity_base[K] + (equivalent_pressure(s, K) - p_E_reference[K]) * inverse_biot_modulus;
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::pore_volume(const State &s, const unsigned int i) const
+    {
+      if (biot_storage && i < grid.n_matrix_cells)
+        return grid.nodes[i].measure * porosity(s, i);
+      return grid.pore_volume(i);
+    }
+
+    template <int dim>
+    typename TwoPhaseSolver<dim>::EnergyExchange
+    TwoPhaseSolver<dim>::energy_exchange(const State &s, const double dt) const
+    {
+      // Testing (11a) with p^alpha: sum_i p_i (sum of outflows of i) = sum_c F_c (p_a - p_b)
+      // over connections between unknowns, plus F_c (p_a - p_b) + F_c p_b for a Dirichlet b.
+      EnergyExchange        e;
+      std::array<double, 4> d;
+      for (const auto &c : grid.connections)
+        {
+          const bool da = grid.is_dirichlet(c.a), db = grid.is_dirichlet(c.b);
+          if (da && db)
+            continue;
+          for (unsigned int phase = 0; phase < 2; ++phase)
+            {
+              const double F = dt * flux(c, s, phase, d);
+              e.dissipation += F * (s[c.a][phase] - s[c.b][phase]);
+              if (db)
+                e.boundary_work -= F * s[c.b][phase];
+              if (da)
+                e.boundary_work += F * s[c.a][phase];
+            }
+        }
+      return e;
     }
 
     template <int dim>
     std::array<double, 2>
     TwoPhaseSolver<dim>::mass_defect(const State &s, const State &old, const double dt) const
     {
-      const auto m_new = phase_volumes(s), m_old = phase_volumes(old);
+      const auto m_new = phase_volumes(s),
+                 m_old = phase_volumes(old, old_pore_volume.empty() ? nullptr : &old_pore_volume);
       std::array<double, 2> outflow{{0., 0.}}, throughput{{0., 0.}};
       std::array<double, 4> d;
       for (const auto &c : grid.connections)

@@ -534,19 +534,7 @@ namespace porofrac
       const unsigned int N   = n_dofs();
       residual_history.clear();
       converged = false;
-      if (warm_start && solved_once)
-        {
-          // Start from the previous solution; nothing to do if it still satisfies the tolerance.
-          const double res = relative_residual();
-          if (res <= prm.tolerance)
-            {
-              residual_history.push_back(res);
-              iterations = 0;
-              converged  = true;
-              return;
-            }
-        }
-      else
+      if (!(warm_start && solved_once))
         {
           // Initial guess: u = 0 (plus Dirichlet values); open lambda = 0, or stick
           // lambda_n = given.

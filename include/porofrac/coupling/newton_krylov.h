@@ -48,6 +48,11 @@ namespace porofrac
       double       relative_residual  = 0; ///< ||R(x)|| / ||R(x_0)|| at the end
       double       relative_increment = 0; ///< last ||dx|| / ||x||
       std::vector<double> residual_history;  ///< ||R(x_k)||
+      /// Whether the states inside g are those of the returned x: true for Newton-Krylov stopping
+      /// on the residual (last evaluation at x) and for Picard (x = g(x_prev) within the
+      /// tolerance); false for Newton-Krylov stopping on the increment, whose last evaluation
+      /// was a shifted point of a Jacobian-vector product: a caller must evaluate g(x) again.
+      bool evaluated_at_solution = false;
     };
 
     /**

@@ -107,18 +107,71 @@ namespace porofrac
         return rocks[rock].saturation.saturation(state[i][1] - state[i][0]);
       }
 
-      /// Mass (pore volume) of each phase over non-Dirichlet nodes.
+      /// Mass (pore volume) of each phase over non-Dirichlet nodes, with the pore volumes of
+      /// @p state (or, if given, @p pore_volumes).
       std::array<double, 2>
-      phase_volumes(const State &state) const;
+      phase_volumes(const State &state, const std::vector<double> *pore_volumes = nullptr) const;
 
       /// Per phase: |mass change + dt * net outflow into Dirichlet nodes| / max(total pore
       /// volume, dt * sum of |boundary fluxes|), computed independently of the residual.
       std::array<double, 2>
       mass_defect(const State &state, const State &old, const double dt) const;
 
-      /// Newton for one step from old_state to state (state holds the initial guess).
+      /// Newton for one step from old_state to state (state holds the initial guess). Never
+      /// throws on non-convergence: the result says converged = false.
       StepResult
       solve_time_step(const double dt, ConditionalOStream &verbose);
+
+      /**
+       * Starts a time step: old_state = state, and the pore volume of every node is stored as
+       * the old one, so that the accumulation of scheme (11a) is (PV S)^{n+1} - (PV S)^n even
+       * when porosity and apertures change between steps (coupled scenes).
+       */
+      void
+      begin_time_step();
+
+      /**
+       * Biot storage of paper eq. (11d) in matrix cells: phi_K = porosity_base_K + (p_E,K -
+       * p_E_reference_K) * inverse_biot_modulus, with p_E the equivalent pressure of the
+       * current unknowns (implicit: residual and Jacobian include it). Without a call, phi_K is
+       * the grid's porosity. Vectors per matrix cell (active cell index).
+       */
+      void
+      set_biot_storage(const std::vector<double> &porosity_base,
+                       const std::vector<double> &p_E_reference,
+                       const double               inverse_biot_modulus,
+                       const bool                 capillary_energy);
+      /// Replaces porosity_base (phi_0 + b div(u - u_0) from the mechanics).
+      void
+      set_porosity_base(const std::vector<double> &porosity_base);
+
+      /**
+       * p_E = sum_alpha p^alpha s^alpha - U(p_c) of node i (11d) with its rock's laws; without
+       * U if the Biot storage was set with capillary_energy = false (Remark 3.1). Matrix cells
+       * are nodes 0..n_matrix_cells-1, the fracture cell of CutMesh fracture face f is node
+       * n_matrix_cells + f.
+       */
+      double
+      equivalent_pressure(const State &s, const unsigned int i) const;
+      /// Porosity of matrix cell K in state @p s (the Biot law if set, else the grid's).
+      double
+      porosity(const State &s, const unsigned int K) const;
+      /// Pore volume of node i in state @p s (|K| phi_K, |sigma| d_f, 0 for massless nodes).
+      double
+      pore_volume(const State &s, const unsigned int i) const;
+
+      /// Energy exchanged during a step (paper estimate (19), doc/coupling.md).
+      struct EnergyExchange
+      {
+        /// dt sum_alpha sum_c F^alpha_c (p^alpha_a - p^alpha_b) over every connection with an
+        /// unknown end (>= 0 with upwinded, non-negative mobilities).
+        double dissipation = 0;
+        /// -dt sum_alpha sum_c F^alpha_{a->b} p^alpha_b over connections to Dirichlet nodes b:
+        /// the energy supplied through the Dirichlet boundaries.
+        double boundary_work = 0;
+      };
+      EnergyExchange
+      energy_exchange(const State &s, const double dt) const;
 
       State state;
       State old_state;
@@ -133,6 +186,14 @@ namespace porofrac
       SparseMatrix<double> jacobian;
 
     private:
+      std::vector<double>       old_pore_volume; ///< empty until begin_time_step()
+      bool                      biot_storage = false;
+      std::vector<double>       porosity_base, p_E_reference;
+      double                    inverse_biot_modulus = 0;
+      bool                      capillary_energy     = true;
+      /// d p_E / d (p^w, p^nw) of node i.
+      std::array<double, 2>
+      equivalent_pressure_derivatives(const State &s, const unsigned int i) const;
       std::vector<unsigned int> node_dof;
       unsigned int              n_free;
       double                    total_pore_volume() const;

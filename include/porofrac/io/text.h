@@ -20,6 +20,15 @@ namespace porofrac
       return b == std::string::npos ? "" : s.substr(b, e - b + 1);
     }
 
+    /// A number in the shortest default stream format (1.5, 1e-07, 6.31152e+09), for messages.
+    inline std::string
+    to_text(const double v)
+    {
+      std::ostringstream s;
+      s << v;
+      return s.str();
+    }
+
     /// "(x, y)" or "(x, y, z)", for messages.
     template <int dim>
     std::string

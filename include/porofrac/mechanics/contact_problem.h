@@ -45,8 +45,9 @@ namespace porofrac
       /**
        * Runs the contact iterations; throws SolverFailure after max_iterations. With
        * @p warm_start (and a previous solve), starts from the current (u, lambda) instead of
-       * the deck's initial guess and returns with 0 iterations if that already satisfies the
-       * tolerance.
+       * the deck's initial guess. At least one iteration is always done, so that small load
+       * changes (finite differences of a coupled map) are resolved exactly; with an unchanged
+       * active set it costs one solve with the stored factorization.
        */
       void
       solve(const bool warm_start = false);

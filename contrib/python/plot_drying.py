@@ -1,0 +1,159 @@
+#!/usr/bin/python3
+"""Reproduces the paper's Figs. 14-18 (Section 5.3) from PoroFrac runs of prm/drying_cylinder.prm
+written with `--set Output/Format=vtk`.
+
+Usage: plot_drying.py AS_DIR SSN_DIR AS_U_DIR PICTURE_DIR
+  AS_DIR    active set + Newton-Krylov on p_E (the deck's defaults)
+  SSN_DIR   semi-smooth Newton (c = 1e9) + Newton-Krylov on p_E
+  AS_U_DIR  active set + Newton-Krylov on u
+Writes drying_fig14_states.png, drying_fig15_width.png, drying_fig16_aperture.png,
+drying_fig17_fields.png, drying_fig18_iterations.png into PICTURE_DIR.
+"""
+import csv
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(__file__))
+from plot_mesh import read_legacy_vtk  # noqa: E402
+
+YEAR = 3.15576e7
+STATE_NAMES = ["open", "stick", "slip"]
+STATE_COLOURS = ["tab:red", "tab:blue", "tab:green"]
+
+
+def read_history(directory):
+    with open(os.path.join(directory, "history.csv")) as f:
+        return list(csv.DictReader(f))
+
+
+def read_pvd(directory):
+    """(time, file) of every dataset of poromechanics.pvd."""
+    with open(os.path.join(directory, "poromechanics.pvd")) as f:
+        text = f.read()
+    return [(float(t), name) for t, name in
+            re.findall(r'timestep="([^"]+)" file="([^"]+)"', text)]
+
+
+def snapshots(directory, times):
+    """The fracture VTK files closest to the requested times (s)."""
+    entries = read_pvd(directory)
+    chosen = []
+    for t in times:
+        best = min(entries, key=lambda e: abs(e[0] - t))
+        base = best[1][:-len(".vtk")]
+        chosen.append((best[0], os.path.join(directory, base)))
+    return chosen
+
+
+def fracture_segments(base):
+    points, cells, data = read_legacy_vtk(base + "_fractures.vtk")
+    segments = [[points[c[0]], points[c[1]]] for c in cells]
+    return segments, data
+
+
+def plot_fracture_field(directory, times, picture, field, title, states=False):
+    shots = snapshots(directory, times)
+    fig, axes = plt.subplots(len(shots), 1, figsize=(9, 2.6 * len(shots)), sharex=True)
+    for ax, (t, base) in zip(axes, shots):
+        segments, data = fracture_segments(base)
+        if states:
+            colours = [STATE_COLOURS[int(round(v))] for v in data["state"]]
+            ax.add_collection(LineCollection(segments, colors=colours, linewidths=3))
+            for name, colour in zip(STATE_NAMES, STATE_COLOURS):
+                ax.plot([], [], color=colour, lw=3, label=name)
+            ax.legend(loc="upper right", fontsize=8, ncol=3)
+        else:
+            lc = LineCollection(segments, array=data[field], cmap="viridis", linewidths=3)
+            ax.add_collection(lc)
+            fig.colorbar(lc, ax=ax, label="aperture (m)")
+        ax.set_xlim(0, 10)
+        ax.set_ylim(4.9, 6.6)
+        ax.set_ylabel("r (m)")
+        ax.set_title(f"{title}, t = {t / YEAR:.3g} years", fontsize=10)
+    axes[-1].set_xlabel("x (m)")
+    fig.tight_layout()
+    fig.savefig(picture, dpi=120)
+    plt.close(fig)
+
+
+def plot_width(as_dir, ssn_dir, picture):
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    for directory, label, style in [(as_dir, "active set (c = 1e6)", "-"),
+                                    (ssn_dir, "semi-smooth Newton (c = 1e9)", "--")]:
+        h = read_history(directory)
+        ax.plot([float(r["time"]) / YEAR for r in h],
+                [float(r["mean_fracture_width"]) * 1e3 for r in h], style, label=label)
+    ax.set_xlabel("time (years)")
+    ax.set_ylabel("mean fracture width (mm)")
+    ax.set_xscale("log")
+    ax.legend()
+    ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(picture, dpi=120)
+    plt.close(fig)
+
+
+def plot_fields(directory, picture):
+    t, base = read_pvd(directory)[-1]
+    points, cells, data = read_legacy_vtk(os.path.join(directory, base))
+    triangles = [[points[i] for i in c] for c in cells if len(c) == 3]
+    fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
+    for ax, (name, label) in zip(axes, [("s_nw", "gas saturation"),
+                                        ("p_E", "equivalent pressure (Pa)"),
+                                        ("porosity", "porosity")]):
+        pc = PolyCollection(triangles, array=data[name], cmap="viridis", edgecolors="none")
+        ax.add_collection(pc)
+        fig.colorbar(pc, ax=ax, label=label)
+        ax.set_xlim(0, 10)
+        ax.set_ylim(5, 8)
+        ax.set_ylabel("r (m)")
+    axes[0].set_title(f"t = {t / YEAR:.3g} years", fontsize=10)
+    axes[-1].set_xlabel("x (m)")
+    fig.tight_layout()
+    fig.savefig(picture, dpi=120)
+    plt.close(fig)
+
+
+def plot_iterations(runs, picture):
+    fig, ax = plt.subplots(figsize=(6.5, 4))
+    for directory, label in runs:
+        h = read_history(directory)
+        total = sum(int(r["flow_newton_iterations"]) + int(r["mechanics_iterations"]) for r in h)
+        ax.plot([float(r["time"]) / YEAR for r in h],
+                [int(r["flow_newton_iterations"]) + int(r["mechanics_iterations"]) for r in h],
+                label=f"{label} (total {total})")
+    ax.set_xlabel("time (years)")
+    ax.set_ylabel("flow + mechanics iterations per step")
+    ax.set_xscale("log")
+    ax.legend(fontsize=8)
+    ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(picture, dpi=120)
+    plt.close(fig)
+
+
+def main():
+    if len(sys.argv) != 5:
+        sys.exit(__doc__)
+    as_dir, ssn_dir, as_u_dir, out = sys.argv[1:]
+    times = [1 * YEAR, 50 * YEAR, 200 * YEAR]
+    plot_fracture_field(as_dir, times, os.path.join(out, "drying_fig14_states.png"), "state",
+                        "contact state", states=True)
+    plot_width(as_dir, ssn_dir, os.path.join(out, "drying_fig15_width.png"))
+    plot_fracture_field(as_dir, times, os.path.join(out, "drying_fig16_aperture.png"),
+                        "aperture", "aperture")
+    plot_fields(as_dir, os.path.join(out, "drying_fig17_fields.png"))
+    plot_iterations([(as_dir, "active set + NK(p_E)"), (ssn_dir, "semi-smooth Newton + NK(p_E)"),
+                     (as_u_dir, "active set + NK(u)")],
+                    os.path.join(out, "drying_fig18_iterations.png"))
+
+
+if __name__ == "__main__":
+    main()

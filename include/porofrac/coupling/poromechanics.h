@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_COUPLING_POROMECHANICS_H
+#define POROFRAC_COUPLING_POROMECHANICS_H
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/vector.h>
+
+#include <porofrac/coupling/newton_krylov.h>
+#include <porofrac/coupling/parameters.h>
+#include <porofrac/flow/model.h>
+#include <porofrac/mechanics/contact_problem.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace porofrac
+{
+  namespace coupling
+  {
+    using namespace dealii;
+
+    /// What one coupled time step did.
+    struct CoupledStepReport
+    {
+      bool         converged              = false;
+      unsigned int coupling_iterations    = 0; ///< Newton(-Krylov) or Picard iterations
+      unsigned int map_evaluations        = 0; ///< evaluations of g_p or g_u
+      unsigned int gmres_iterations       = 0;
+      unsigned int flow_newton_iterations = 0; ///< summed over all flow solves of the step
+      unsigned int mechanics_iterations   = 0; ///< summed over all contact solves of the step
+      double       relative_residual      = 0;
+      std::array<double, 2> mass_defect{{0., 0.}};
+      std::string  failure; ///< why the step failed, empty when converged
+    };
+
+    /**
+     * Terms of the discrete energy estimate (19) over one time step t_k -> t_{k+1} (all in J, or
+     * J/rad... per the weights of the axisymmetric measures): the stored energy
+     *   E = sum_K phi_K U_m(p_c,K) |K| + sum_sigma d_f U_f(p_c,sigma) |sigma|
+     *       + 1/2 a(u, u) + sum_K (p_E,K)^2 |K| / (2 M),
+     * the flow dissipation dt sum_alpha sum_c T_c eta^alpha_up (p^alpha_a - p^alpha_b)^2 over
+     * connections between unknown nodes, the frictional work int_Gamma lambda . [u - u_old] >= 0
+     * (eq. (17)), and the work supplied: mechanical loads f_ext . (u - u_old) and Dirichlet flow
+     * boundaries -dt sum_alpha sum_c F^alpha_c p^alpha_b. The inequality is
+     *   E_{k+1} - E_k + dissipation + friction_work <= supplied,
+     * (testing (11a) with p^alpha and (11b) with u - u_old, using the convexity of U).
+     */
+    struct EnergyTerms
+    {
+      double capillary_matrix   = 0;
+      double capillary_fracture = 0;
+      double elastic            = 0;
+      double storage            = 0; ///< sum (p_E)^2 |K| / (2M)
+      double total() const
+      {
+        return capillary_matrix + capillary_fracture + elastic + storage;
+      }
+    };
+
+    /**
+     * The coupled problem of the paper's Section 4.2: contact mechanics (11b)-(11c) and two-phase
+     * flow (11a) linked by the closure (11d). Each time step solves the fixed point
+     * p_E = g_p(p_E) or u = g_u(u) (paper, Section 5 opening) with FixedPointSolver.
+     *
+     * Numbering: matrix quantities per active cell index (= flow matrix cells), fracture
+     * quantities per CutMesh fracture face index (= flow fracture cells n_matrix + f).
+     */
+    template <int dim>
+    class Poromechanics
+    {
+    public:
+      Poromechanics(mechanics::ContactProblem<dim> &mechanics,
+                    flow::FlowModel<dim>           &flow,
+                    const CouplingParameters       &parameters,
+                    ConditionalOStream             &verbose,
+                    TimerOutput                    &timer);
+
+      /// t = 0: p_E^0 of the initial pressures, (u^0, lambda^0) the contact solution with p_E^0
+      /// (paper, after (11d)), phi = phi_0, d_f = d_0 - [u^0]_n.
+      void
+      initialize();
+
+      /// One implicit step of length dt from the accepted state. On failure, the flow state is
+      /// reset to the accepted one and the report says why.
+      CoupledStepReport
+      solve_time_step(const double dt);
+
+      /// Makes the current state the accepted one; returns the energy balance of the step.
+      void
+      accept_time_step();
+
+      /// Stored energy E of (19) at the current state.
+      EnergyTerms
+      energy() const;
+      /// Dissipation + friction work - supplied work of the last solved step (see EnergyTerms).
+      double
+      last_step_dissipation() const
+      {
+        return step_dissipation;
+      }
+      double
+      last_step_friction_work() const
+      {
+        return step_friction_work;
+      }
+      double
+      last_step_supplied_work() const
+      {
+        return step_supplied_work;
+      }
+
+      /// Length-weighted mean of d_f over all fracture faces (paper Fig. 15).
+      double
+      mean_fracture_width() const;
+
+      /// Current p_E per matrix cell then per fracture face (flow numbering).
+      const Vector<double> &
+      equivalent_pressure() const
+      {
+        return p_E;
+      }
+
+      mechanics::ContactProblem<dim> &mechanics;
+      flow::FlowModel<dim>           &flow;
+
+    private:
+      /// g_p: contact mechanics with x = p_E, then flow with the resulting u; gx = p_E(flow).
+      void
+      map_pressure(const Vector<double> &x, Vector<double> &gx);
+      /// g_u on y = (cell means of div u, face jumps [u]_n): flow, then mechanics.
+      void
+      map_displacement(const Vector<double> &y, Vector<double> &gy);
+
+      void
+      solve_mechanics(const Vector<double> &p_E_all);
+      /// (div u per cell, [u]_n per face) of the current mechanics solution.
+      Vector<double>
+      displacement_measures() const;
+      /// Porosity base phi_0 + b (div u - div u^0) and apertures d_0 - [u]_n from y.
+      void
+      set_flow_inputs(const Vector<double> &y);
+      void
+      solve_flow();
+      /// p_E per matrix cell and fracture cell of the current flow state (11d).
+      Vector<double>
+      flow_equivalent_pressure() const;
+      void
+      compute_step_energy_terms();
+
+      const CouplingParameters parameters;
+      ConditionalOStream      &verbose;
+      TimerOutput             &timer;
+      const unsigned int       n_matrix, n_fracture;
+
+      double                   dt = 0;
+      Vector<double>           p_E;       ///< current (matrix cells, then fracture faces)
+      Vector<double>           p_E_old;   ///< accepted
+      Vector<double>           p_E_initial;
+      Vector<double>           y_initial; ///< div u^0, [u^0]_n
+      Vector<double>           y_old;     ///< accepted
+      Vector<double>           u_old;     ///< accepted displacement
+      std::vector<Tensor<1, dim>> jump_old;
+      typename flow::TwoPhaseSolver<dim>::State flow_guess;
+      CoupledStepReport        report;
+      double                   step_dissipation = 0, step_friction_work = 0,
+                               step_supplied_work = 0;
+    };
+  } // namespace coupling
+} // namespace porofrac
+
+#endif

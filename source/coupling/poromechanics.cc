@@ -1,0 +1,337 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/base/exceptions.h>
+#include <porofrac/io/text.h>
+#include <porofrac/coupling/poromechanics.h>
+#include <porofrac/flow/laws.h>
+
+#include <cmath>
+
+namespace porofrac
+{
+  namespace coupling
+  {
+    template <int dim>
+    Poromechanics<dim>::Poromechanics(mechanics::ContactProblem<dim> &mechanics,
+                                      flow::FlowModel<dim>           &flow,
+                                      const CouplingParameters       &parameters,
+                                      ConditionalOStream             &verbose,
+                                      TimerOutput                    &timer)
+      : mechanics(mechanics)
+      , flow(flow)
+      , parameters(parameters)
+      , verbose(verbose)
+      , timer(timer)
+      , n_matrix(flow.grid->n_matrix_cells)
+      , n_fracture(flow.grid->n_fracture_cells)
+    {
+      check_input(n_fracture == mechanics.get_mesh().fracture_faces.size(), "Coupling",
+                  "the flow and mechanics meshes do not share their fracture faces");
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::initialize()
+    {
+      auto &solver = *flow.solver;
+      // p_E^0 from the initial pressures (11d); the storage term of (11d) is measured from it.
+      p_E_initial = flow_equivalent_pressure();
+      p_E         = p_E_initial;
+      p_E_old     = p_E_initial;
+      solver.set_biot_storage(std::vector<double>(n_matrix, flow.initial_porosity),
+                              std::vector<double>(p_E_initial.begin(),
+                                                  p_E_initial.begin() + n_matrix),
+                              1. / parameters.biot_modulus, parameters.capillary_energy);
+      // (u^0, lambda^0): the contact problem without time variable for p_E^0, from the deck's
+      // initial guess (paper: open at the first step).
+      solve_mechanics(p_E_initial);
+      y_initial = displacement_measures();
+      y_old     = y_initial;
+      set_flow_inputs(y_initial);
+      u_old = mechanics.displacement();
+      jump_old.resize(n_fracture);
+      for (unsigned int f = 0; f < n_fracture; ++f)
+        jump_old[f] = mechanics.jump(f);
+      flow_guess = solver.state;
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::solve_mechanics(const Vector<double> &x)
+    {
+      TimerOutput::Scope t(timer, "Coupling: contact mechanics");
+      mechanics.set_equivalent_pressures(std::vector<double>(x.begin(), x.begin() + n_matrix),
+                                         std::vector<double>(x.begin() + n_matrix, x.end()),
+                                         parameters.biot_coefficient);
+      // Warm start from the previous solve (paper 5.3: the previous time step's solution).
+      mechanics.solve(/*warm_start=*/true);
+      report.mechanics_iterations += mechanics.iterations;
+      if (!mechanics.converged)
+        throw SolverFailure("contact mechanics did not converge in " +
+                            std::to_string(mechanics.iterations) + " iterations");
+    }
+
+
+
+    template <int dim>
+    Vector<double>
+    Poromechanics<dim>::displacement_measures() const
+    {
+      Vector<double>            y(n_matrix + n_fracture);
+      const std::vector<double> div = mechanics.cell_divergence();
+      for (unsigned int K = 0; K < n_matrix; ++K)
+        y[K] = div[K];
+      for (unsigned int f = 0; f < n_fracture; ++f)
+        y[n_matrix + f] = mechanics.frame(f)[0] * mechanics.jump(f);
+      return y;
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::set_flow_inputs(const Vector<double> &y)
+    {
+      auto &grid   = *flow.grid;
+      auto &solver = *flow.solver;
+      // (11d): phi = phi_0 + b div(u - u^0) + (p_E - p_E^0)/M; the last term is implicit in the
+      // flow solve, the first two are frozen during it.
+      std::vector<double> base(n_matrix);
+      for (unsigned int K = 0; K < n_matrix; ++K)
+        base[K] = flow.initial_porosity + parameters.biot_coefficient * (y[K] - y_initial[K]);
+      solver.set_porosity_base(base);
+      // (11d): d_f = d_0 - [u]_n.
+      for (unsigned int f = 0; f < n_fracture; ++f)
+        {
+          const double d = flow.initial_aperture - y[n_matrix + f];
+          if (!(d > 0))
+            throw SolverFailure("the aperture of fracture face " + std::to_string(f) +
+                                " became non-positive (" + io::to_text(d) + " m)");
+          grid.aperture[f] = d;
+        }
+      grid.update_transmissibilities();
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::solve_flow()
+    {
+      TimerOutput::Scope t(timer, "Coupling: two-phase flow");
+      auto              &solver = *flow.solver;
+      solver.state              = flow_guess;
+      const flow::StepResult r  = solver.solve_time_step(dt, verbose);
+      report.flow_newton_iterations += r.iterations;
+      report.mass_defect = r.mass_defect;
+      if (!r.converged)
+        throw SolverFailure("two-phase flow Newton did not converge in " +
+                            std::to_string(r.iterations) + " iterations");
+      flow_guess = solver.state;
+    }
+
+
+
+    template <int dim>
+    Vector<double>
+    Poromechanics<dim>::flow_equivalent_pressure() const
+    {
+      const auto    &solver = *flow.solver;
+      Vector<double> x(n_matrix + n_fracture);
+      for (unsigned int i = 0; i < n_matrix + n_fracture; ++i)
+        x[i] = solver.equivalent_pressure(solver.state, i);
+      return x;
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::map_pressure(const Vector<double> &x, Vector<double> &gx)
+    {
+      solve_mechanics(x);
+      set_flow_inputs(displacement_measures());
+      solve_flow();
+      gx = flow_equivalent_pressure();
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::map_displacement(const Vector<double> &y, Vector<double> &gy)
+    {
+      set_flow_inputs(y);
+      solve_flow();
+      solve_mechanics(flow_equivalent_pressure());
+      gy = displacement_measures();
+    }
+
+
+
+    template <int dim>
+    CoupledStepReport
+    Poromechanics<dim>::solve_time_step(const double time_step)
+    {
+      dt     = time_step;
+      report = CoupledStepReport();
+      auto &solver = *flow.solver;
+      auto &grid   = *flow.grid;
+      // Kozeny-Carman, explicit in time: the permeability of the previous step's porosity.
+      if (parameters.kozeny_carman)
+        for (unsigned int K = 0; K < n_matrix; ++K)
+          grid.permeability[K] = flow::kozeny_carman(flow.initial_permeability,
+                                                     flow.initial_porosity, grid.porosity[K]);
+      solver.begin_time_step();
+      flow_guess = solver.old_state;
+
+      FixedPointSolver fixed_point(parameters.fixed_point);
+      FixedPointResult result;
+      try
+        {
+          if (parameters.variable == CouplingVariable::equivalent_pressure)
+            {
+              Vector<double> x = p_E_old;
+              result = fixed_point.solve(
+                [this](const Vector<double> &x, Vector<double> &gx) { map_pressure(x, gx); }, x);
+              // Leave every field consistent with one evaluation at the solution.
+              if (!result.evaluated_at_solution)
+                {
+                  Vector<double> gx(x.size());
+                  map_pressure(x, gx);
+                  ++result.map_evaluations;
+                }
+            }
+          else
+            {
+              Vector<double> y = y_old;
+              result = fixed_point.solve(
+                [this](const Vector<double> &y, Vector<double> &gy) { map_displacement(y, gy); },
+                y);
+              if (!result.evaluated_at_solution)
+                {
+                  Vector<double> gy(y.size());
+                  map_displacement(y, gy);
+                  ++result.map_evaluations;
+                }
+            }
+          if (!result.converged)
+            report.failure = "the coupling fixed point did not converge in " +
+                             std::to_string(result.iterations) + " iterations (relative residual " +
+                             io::to_text(result.relative_residual) + ")";
+        }
+      catch (const SolverFailure &e)
+        {
+          report.failure = e.what();
+        }
+      report.converged           = report.failure.empty();
+      report.coupling_iterations = result.iterations;
+      report.map_evaluations     = result.map_evaluations;
+      report.gmres_iterations    = result.gmres_iterations;
+      report.relative_residual   = result.relative_residual;
+      if (report.converged)
+        {
+          p_E = flow_equivalent_pressure();
+          compute_step_energy_terms();
+        }
+      else
+        {
+          // Back to the accepted state, so that a shorter retry starts from the right pore
+          // volumes and apertures.
+          solver.state = solver.old_state;
+          flow_guess   = solver.old_state;
+          try
+            {
+              set_flow_inputs(y_old);
+            }
+          catch (const SolverFailure &)
+            {}
+        }
+      return report;
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::accept_time_step()
+    {
+      auto &solver = *flow.solver;
+      auto &grid   = *flow.grid;
+      // The porosity reached by the step, (11d), kept for output and Kozeny-Carman.
+      for (unsigned int K = 0; K < n_matrix; ++K)
+        grid.porosity[K] = solver.porosity(solver.state, K);
+      p_E_old = p_E;
+      y_old   = displacement_measures();
+      u_old   = mechanics.displacement();
+      for (unsigned int f = 0; f < n_fracture; ++f)
+        jump_old[f] = mechanics.jump(f);
+    }
+
+
+
+    template <int dim>
+    EnergyTerms
+    Poromechanics<dim>::energy() const
+    {
+      const auto &solver = *flow.solver;
+      const auto &grid   = *flow.grid;
+      EnergyTerms e;
+      for (unsigned int K = 0; K < n_matrix; ++K)
+        {
+          const double pc = solver.state[K][1] - solver.state[K][0];
+          e.capillary_matrix += solver.porosity(solver.state, K) *
+                                flow.rocks[flow::matrix_rock].saturation.energy(pc) *
+                                grid.nodes[K].measure;
+          e.storage += p_E[K] * p_E[K] * grid.nodes[K].measure / (2 * parameters.biot_modulus);
+        }
+      for (unsigned int f = 0; f < n_fracture; ++f)
+        {
+          const unsigned int i  = n_matrix + f;
+          const double       pc = solver.state[i][1] - solver.state[i][0];
+          e.capillary_fracture += grid.pore_volume(i) *
+                                  flow.rocks[flow::fracture_rock].saturation.energy(pc);
+        }
+      e.elastic = mechanics.elastic_energy();
+      return e;
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::compute_step_energy_terms()
+    {
+      const auto &solver  = *flow.solver;
+      const auto  balance = solver.energy_exchange(solver.state, dt);
+      step_dissipation    = balance.dissipation;
+      step_supplied_work  = balance.boundary_work + mechanics.external_work(u_old);
+      step_friction_work  = 0;
+      for (unsigned int f = 0; f < n_fracture; ++f)
+        step_friction_work += mechanics.multiplier(f) * (mechanics.jump(f) - jump_old[f]) *
+                              mechanics.face_measure(f);
+    }
+
+
+
+    template <int dim>
+    double
+    Poromechanics<dim>::mean_fracture_width() const
+    {
+      const auto &faces = mechanics.get_mesh().fracture_faces;
+      double      num = 0, den = 0;
+      for (unsigned int f = 0; f < n_fracture; ++f)
+        {
+          num += faces[f].measure * flow.grid->aperture[f];
+          den += faces[f].measure;
+        }
+      return den > 0 ? num / den : 0.;
+    }
+
+    template class Poromechanics<2>;
+    template class Poromechanics<3>;
+  } // namespace coupling
+} // namespace porofrac
