@@ -187,6 +187,12 @@ namespace porofrac
                                                      flow.initial_porosity, grid.porosity[K]);
       solver.begin_time_step();
       flow_guess = solver.old_state;
+      {
+        // The flow residual at the start of the step is the scale of the inner tolerances.
+        Vector<double> residual;
+        solver.assemble(solver.old_state, solver.old_state, dt, residual, nullptr);
+        solver.residual_scale = residual.l2_norm();
+      }
 
       FixedPointSolver fixed_point(parameters.fixed_point);
       FixedPointResult result;

@@ -361,7 +361,7 @@ namespace porofrac
           if (!std::isfinite(r))
             return result;
           if (it == 0)
-            r0 = r;
+            r0 = std::max(r, residual_scale);
           result.mass_defect = mass_defect(state, old_state, dt);
           const bool mass_ok = result.mass_defect[0] < parameters.mass_tolerance &&
                                result.mass_defect[1] < parameters.mass_tolerance;

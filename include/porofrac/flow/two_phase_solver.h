@@ -175,6 +175,10 @@ namespace porofrac
 
       State state;
       State old_state;
+      /// If positive, the residual tolerance is relative to max(|R_0|, residual_scale) instead
+      /// of |R_0|: warm-started solves inside coupled iterations start next to the solution, so
+      /// |R_0| is no scale for them (the coupler passes the residual of the step's old state).
+      double residual_scale = 0;
       /// Optional: times "Flow: assembly" and "Flow: linear solve (UMFPACK)".
       TimerOutput *timer = nullptr;
 
