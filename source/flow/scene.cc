@@ -326,7 +326,7 @@ namespace porofrac
                             p_m :
                             p_f;
       solver.apply_dirichlet(solver.state);
-      solver.old_state = solver.state;
+      solver.begin_time_step();
 
       context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
                      << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
@@ -407,7 +407,7 @@ namespace porofrac
           context.progress << "  Flow step " << step << ": t = " << t << " s, dt = " << dt_step
                            << " s, " << result.iterations << " Newton iterations, mass defect "
                            << mass_error << std::endl;
-          solver.old_state = solver.state;
+          solver.begin_time_step();
           // dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max) (specs.md 1.1)
           dt = std::min(rho * dt_step, dt_max);
           const bool done = t >= T_final * (1 - 1e-12);

@@ -44,7 +44,125 @@ namespace porofrac
       mean_pore_volume = total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       jacobian.reinit(sparsity);
       state.assign(grid.n_nodes(), {{0., 0.}});
+      begin_time_step();
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::begin_time_step()
+    {
       old_state = state;
+      old_pore_volume.resize(grid.n_nodes());
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        old_pore_volume[i] = pore_volume(old_state, i);
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::set_biot_storage(const std::vector<double> &porosity_base,
+                                          const std::vector<double> &p_E_reference,
+                                          const double               inverse_biot_modulus,
+                                          const bool                 capillary_energy)
+    {
+      AssertThrow(p_E_reference.size() == grid.n_matrix_cells,
+                  ExcDimensionMismatch(p_E_reference.size(), grid.n_matrix_cells));
+      check_input(std::isfinite(inverse_biot_modulus) && inverse_biot_modulus >= 0,
+                  "Coupling/Biot modulus", "1/M must be finite and non-negative");
+      set_porosity_base(porosity_base);
+      p_E_reference_        = p_E_reference;
+      inverse_biot_modulus_ = inverse_biot_modulus;
+      capillary_energy_     = capillary_energy;
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::set_porosity_base(const std::vector<double> &porosity_base)
+    {
+      AssertThrow(porosity_base.size() == grid.n_matrix_cells,
+                  ExcDimensionMismatch(porosity_base.size(), grid.n_matrix_cells));
+      porosity_base_ = porosity_base;
+      if (!biot)
+        p_E_reference_.assign(grid.n_matrix_cells, 0.);
+      biot = true;
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::equivalent_pressure(const State &s, const unsigned int node) const
+    {
+      AssertIndexRange(node, grid.n_nodes());
+      // p^E = p^w (1 - S) + p^nw S - U(p_c) = p^w + p_c S - U(p_c) (paper eq. (6)).
+      const SaturationLaw &law = rocks[grid.nodes[node].rock].saturation;
+      const double         pc  = s[node][1] - s[node][0];
+      return s[node][0] + pc * law.saturation(pc) - (capillary_energy_ ? law.energy(pc) : 0.);
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::porosity(const State &s, const unsigned int K) const
+    {
+      AssertIndexRange(K, grid.n_matrix_cells);
+      if (!biot)
+        return grid.porosity[K];
+      // Linearised Biot storage, eq. (11d).
+      if (inverse_biot_modulus_ == 0)
+        return porosity_base_[K];
+      return porosity_base_[K] + (equivalent_pressure(s, K) - p_E_reference_[K]) * inverse_biot_modulus_;
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::pore_volume(const State &s, const unsigned int i) const
+    {
+      std::array<double, 2> d;
+      return pore_volume(s, i, d);
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::pore_volume(const State &s, const unsigned int i,
+                                     std::array<double, 2> &d) const
+    {
+      d = {{0., 0.}};
+      if (i >= grid.n_matrix_cells || !biot)
+        return grid.pore_volume(i);
+      const double measure = grid.nodes[i].measure;
+      if (inverse_biot_modulus_ != 0)
+        {
+          // d p^E/d p^w = 1 - S, d p^E/d p^nw = S with U (U' = p_c S'); without U, -/+ p_c S'.
+          const SaturationLaw &law = rocks[grid.nodes[i].rock].saturation;
+          const double         pc  = s[i][1] - s[i][0];
+          const double         S   = law.saturation(pc);
+          const double         x   = capillary_energy_ ? 0. : pc * law.derivative(pc);
+          d = {{measure * inverse_biot_modulus_ * (1. - S - x),
+                measure * inverse_biot_modulus_ * (S + x)}};
+        }
+      return measure * porosity(s, i);
+    }
+
+    template <int dim>
+    EnergyExchange
+    TwoPhaseSolver<dim>::energy_exchange(const State &s, const double dt) const
+    {
+      EnergyExchange        e;
+      std::array<double, 4> d;
+      for (const auto &c : grid.connections)
+        {
+          const bool da = grid.is_dirichlet(c.a), db = grid.is_dirichlet(c.b);
+          if (da && db)
+            continue;
+          for (unsigned int phase = 0; phase < 2; ++phase)
+            {
+              const double F = flux(c, s, phase, d); // a -> b
+              if (!da && !db)
+                e.dissipation += dt * F * (s[c.a][phase] - s[c.b][phase]);
+              else if (db)
+                e.boundary_work -= dt * F * s[c.b][phase];
+              else // Dirichlet node a: the flux into it from b is -F.
+                e.boundary_work += dt * F * s[c.a][phase];
+            }
+        }
+      return e;
     }
 
     template <int dim>
@@ -94,13 +212,14 @@ namespace porofrac
       residual.reinit(2 * n_free);
       if (J)
         *J = 0;
-      // Accumulation |K| phi (S^{n+1} - S^n) (scheme (11a)).
+      // Accumulation (PV S)^{n+1} - PV_old S^n (scheme (11a)), PV with the Biot storage (11d).
+      std::array<double, 2> dPV;
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         {
-          double PV = grid.pore_volume(i);
           if (node_dof[i] == numbers::invalid_unsigned_int)
             continue;
-          if (PV == 0)
+          const double PV = pore_volume(s, i, dPV), PV_old = old_pore_volume[i];
+          if (PV == 0 && PV_old == 0)
             {
               // Massless node: with the entry slope active and p_c <= 0, a Jacobian-only
               // virtual pore volume keeps the rows of an absent phase non-singular.
@@ -115,20 +234,20 @@ namespace porofrac
               J->add(dof(i, 0), dof(i, 0), PVv * dS);
               continue;
             }
-          const RockType &rock = rocks[grid.nodes[i].rock];
-          const double    pc   = s[i][1] - s[i][0];
-          const double    dS   = rock.saturation.saturation(pc) -
-                            rock.saturation.saturation(old[i][1] - old[i][0]);
-          const double dSdpc = slope(rock, pc);
-          // phase nw: +dS; phase w: -dS
-          residual(dof(i, 1)) += PV * dS;
-          residual(dof(i, 0)) -= PV * dS;
+          const RockType &rock  = rocks[grid.nodes[i].rock];
+          const double    pc    = s[i][1] - s[i][0];
+          const double    S     = rock.saturation.saturation(pc);
+          const double    S_old = rock.saturation.saturation(old[i][1] - old[i][0]);
+          const double    dSdpc = slope(rock, pc);
+          residual(dof(i, 1)) += PV * S - PV_old * S_old;
+          residual(dof(i, 0)) += PV * (1. - S) - PV_old * (1. - S_old);
           if (J)
             {
-              J->add(dof(i, 1), dof(i, 1), PV * dSdpc);
-              J->add(dof(i, 1), dof(i, 0), -PV * dSdpc);
-              J->add(dof(i, 0), dof(i, 1), -PV * dSdpc);
-              J->add(dof(i, 0), dof(i, 0), PV * dSdpc);
+              // d/dp^w and d/dp^nw: dS/dp^w = -S', dS/dp^nw = S'.
+              J->add(dof(i, 1), dof(i, 0), dPV[0] * S - PV * dSdpc);
+              J->add(dof(i, 1), dof(i, 1), dPV[1] * S + PV * dSdpc);
+              J->add(dof(i, 0), dof(i, 0), dPV[0] * (1. - S) + PV * dSdpc);
+              J->add(dof(i, 0), dof(i, 1), dPV[1] * (1. - S) - PV * dSdpc);
             }
         }
       // Fluxes.
@@ -192,9 +311,10 @@ namespace porofrac
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         if (!grid.is_dirichlet(i))
           {
-            const double S = saturation(s, i, grid.nodes[i].rock);
-            m[1] += grid.pore_volume(i) * S;
-            m[0] += grid.pore_volume(i) * (1. - S);
+            const double S  = saturation(s, i, grid.nodes[i].rock);
+            const double PV = pore_volume(s, i);
+            m[1] += PV * S;
+            m[0] += PV * (1. - S);
           }
       return m;
     }
@@ -203,7 +323,17 @@ namespace porofrac
     std::array<double, 2>
     TwoPhaseSolver<dim>::mass_defect(const State &s, const State &old, const double dt) const
     {
-      const auto m_new = phase_volumes(s), m_old = phase_volumes(old);
+      const auto            m_new = phase_volumes(s);
+      std::array<double, 2> m_old{{0., 0.}};
+      double                V = 0;
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (!grid.is_dirichlet(i))
+          {
+            const double S = saturation(old, i, grid.nodes[i].rock);
+            m_old[1] += old_pore_volume[i] * S;
+            m_old[0] += old_pore_volume[i] * (1. - S);
+            V += old_pore_volume[i];
+          }
       std::array<double, 2> outflow{{0., 0.}}, throughput{{0., 0.}};
       std::array<double, 4> d;
       for (const auto &c : grid.connections)
@@ -219,7 +349,6 @@ namespace porofrac
             }
         }
       // Relative to the larger of the pore volume and the volume that crossed the boundary.
-      const double V = total_pore_volume();
       return {{std::abs(m_new[0] - m_old[0] + outflow[0]) / std::max(V, throughput[0]),
                std::abs(m_new[1] - m_old[1] + outflow[1]) / std::max(V, throughput[1])}};
     }
@@ -235,6 +364,10 @@ namespace porofrac
       apply_dirichlet(state);
       for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
         {
+          // A non-finite state (initial guess or diverged update) is a failed step.
+          for (const auto &p : state)
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
+              return result;
           // Entry slope for the first iterations only, exact Jacobian afterwards.
           entry_slope_active = it < parameters.entry_slope_iterations;
           {
@@ -269,17 +402,19 @@ namespace porofrac
             std::unique_ptr<TimerOutput::Scope> t;
             if (timer)
               t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: linear solve (UMFPACK)");
+            // A singular or failed factorisation is a failed step (converged = false), never
+            // an exception: the caller cuts the time step.
             SparseDirectUMFPACK solver;
             try
               {
                 solver.initialize(jacobian);
+                update = residual;
+                solver.solve(update);
               }
             catch (...)
               {
                 return result;
               }
-            update = residual;
-            solver.solve(update);
           }
           // Appleyard-type chop: the capillary pressure of a node changes by at most
           // capillary_chop times the pressure scale of its saturation law per iteration.
