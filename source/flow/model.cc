@@ -106,7 +106,7 @@ namespace porofrac
                             p_m :
                             p_f;
       solver.apply_dirichlet(solver.state);
-      solver.old_state = solver.state;
+      solver.begin_time_step();
       return model;
     }
 

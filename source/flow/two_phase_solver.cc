@@ -44,7 +44,125 @@ namespace porofrac
       mean_pore_volume = total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       jacobian.reinit(sparsity);
       state.assign(grid.n_nodes(), {{0., 0.}});
+      begin_time_step();
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::begin_time_step()
+    {
       old_state = state;
+      old_pore_volume.resize(grid.n_nodes());
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        old_pore_volume[i] = pore_volume(old_state, i);
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::set_biot_storage(const std::vector<double> &porosity_base,
+                                          const std::vector<double> &p_E_reference,
+                                          const double               inverse_biot_modulus,
+                                          const bool                 capillary_energy)
+    {
+      AssertThrow(p_E_reference.size() == grid.n_matrix_cells,
+                  ExcDimensionMismatch(p_E_reference.size(), grid.n_matrix_cells));
+      check_input(std::isfinite(inverse_biot_modulus) && inverse_biot_modulus >= 0,
+                  "Coupling/Biot modulus", "1/M must be finite and non-negative");
+      set_porosity_base(porosity_base);
+      p_E_reference_        = p_E_reference;
+      inverse_biot_modulus_ = inverse_biot_modulus;
+      capillary_energy_     = capillary_energy;
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::set_porosity_base(const std::vector<double> &porosity_base)
+    {
+      AssertThrow(porosity_base.size() == grid.n_matrix_cells,
+                  ExcDimensionMismatch(porosity_base.size(), grid.n_matrix_cells));
+      porosity_base_ = porosity_base;
+      if (!biot)
+        p_E_reference_.assign(grid.n_matrix_cells, 0.);
+      biot = true;
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::equivalent_pressure(const State &s, const unsigned int node) const
+    {
+      AssertIndexRange(node, grid.n_nodes());
+      // p^E = p^w (1 - S) + p^nw S - U(p_c) = p^w + p_c S - U(p_c) (paper eq. (6)).
+      const SaturationLaw &law = rocks[grid.nodes[node].rock].saturation;
+      const double         pc  = s[node][1] - s[node][0];
+      return s[node][0] + pc * law.saturation(pc) - (capillary_energy_ ? law.energy(pc) : 0.);
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::porosity(const State &s, const unsigned int K) const
+    {
+      AssertIndexRange(K, grid.n_matrix_cells);
+      if (!biot)
+        return grid.porosity[K];
+      // Linearised Biot storage, eq. (11d).
+      if (inverse_biot_modulus_ == 0)
+        return porosity_base_[K];
+      return porosity_base_[K] + (equivalent_pressure(s, K) - p_E_reference_[K]) * inverse_biot_modulus_;
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::pore_volume(const State &s, const unsigned int i) const
+    {
+      std::array<double, 2> d;
+      return pore_volume(s, i, d);
+    }
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::pore_volume(const State &s, const unsigned int i,
+                                     std::array<double, 2> &d) const
+    {
+      d = {{0., 0.}};
+      if (i >= grid.n_matrix_cells || !biot)
+        return grid.pore_volume(i);
+      const double measure = grid.nodes[i].measure;
+      if (inverse_biot_modulus_ != 0)
+        {
+          // d p^E/d p^w = 1 - S, d p^E/d p^nw = S with U (U' = p_c S'); without U, -/+ p_c S'.
+          const SaturationLaw &law = rocks[grid.nodes[i].rock].saturation;
+          const double         pc  = s[i][1] - s[i][0];
+          const double         S   = law.saturation(pc);
+          const double         x   = capillary_energy_ ? 0. : pc * law.derivative(pc);
+          d = {{measure * inverse_biot_modulus_ * (1. - S - x),
+                measure * inverse_biot_modulus_ * (S + x)}};
+        }
+      return measure * porosity(s, i);
+    }
+
+    template <int dim>
+    EnergyExchange
+    TwoPhaseSolver<dim>::energy_exchange(const State &s, const double dt) const
+    {
+      EnergyExchange        e;
+      std::array<double, 4> d;
+      for (const auto &c : grid.connections)
+        {
+          const bool da = grid.is_dirichlet(c.a), db = grid.is_dirichlet(c.b);
+          if (da && db)
+            continue;
+          for (unsigned int phase = 0; phase < 2; ++phase)
+            {
+              const double F = flux(c, s, phase, d); // a -> b
+              if (!da && !db)
+                e.dissipation += dt * F * (s[c.a][phase] - s[c.b][phase]);
+              else if (db)
+                e.boundary_work -= dt * F * s[c.b][phase];
+              else // Dirichlet node a: the flux into it from b is -F.
+                e.boundary_work += dt * F * s[c.a][phase];
+            }
+        }
+      return e;
     }
 
     template <int dim>
@@ -94,13 +212,14 @@ namespace porofrac
       residual.reinit(2 * n_free);
       if (J)
         *J = 0;
-      // Accumulation |K| phi (S^{n+1} - S^n) (scheme (11a)).
+      // Accumulation (PV S)^{n+1} - PV_old S^n (scheme (11a)), PV with the Biot storage (11d).
+      std::array<double, 2> dPV;
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         {
-          double PV = pore_volume(s, i);
           if (node_dof[i] == numbers::invalid_unsigned_int)
             continue;
-          if (PV == 0)
+          const double PV = pore_volume(s, i, dPV), PV_old = old_pore_volume[i];
+          if (PV == 0 && PV_old == 0)
             {
               // Massless node: with the entry slope active and p_c <= 0, a Jacobian-only
               // virtual pore volume keeps the rows of an absent phase non-singular.
@@ -115,32 +234,20 @@ namespace porofrac
               J->add(dof(i, 0), dof(i, 0), PVv * dS);
               continue;
             }
-          const RockType &rock   = rocks[grid.nodes[i].rock];
-          const double    pc     = s[i][1] - s[i][0];
-          const double    S      = rock.saturation.saturation(pc);
-          const double    S_old  = rock.saturation.saturation(old[i][1] - old[i][0]);
-          const double    PV_old = old_pore_volume.empty() ? PV : old_pore_volume[i];
-          const double    dSdpc  = slope(rock, pc);
-          // (11a): (PV S^alpha)^{n+1} - (PV S^alpha)^n; phase nw: S, phase w: 1 - S.
+          const RockType &rock  = rocks[grid.nodes[i].rock];
+          const double    pc    = s[i][1] - s[i][0];
+          const double    S     = rock.saturation.saturation(pc);
+          const double    S_old = rock.saturation.saturation(old[i][1] - old[i][0]);
+          const double    dSdpc = slope(rock, pc);
           residual(dof(i, 1)) += PV * S - PV_old * S_old;
-          residual(dof(i, 0)) += PV * (1 - S) - PV_old * (1 - S_old);
+          residual(dof(i, 0)) += PV * (1. - S) - PV_old * (1. - S_old);
           if (J)
             {
-              J->add(dof(i, 1), dof(i, 1), PV * dSdpc);
-              J->add(dof(i, 1), dof(i, 0), -PV * dSdpc);
-              J->add(dof(i, 0), dof(i, 1), -PV * dSdpc);
-              J->add(dof(i, 0), dof(i, 0), PV * dSdpc);
-              // Biot storage: PV = |K| (phi_base + (p_E - p_E,ref) / M) depends on p_E.
-              if (biot_storage && i < grid.n_matrix_cells)
-                {
-                  const auto   dE    = equivalent_pressure_derivatives(s, i);
-                  const double scale = grid.nodes[i].measure * inverse_biot_modulus;
-                  for (unsigned int q = 0; q < 2; ++q)
-                    {
-                      J->add(dof(i, 1), dof(i, q), S * scale * dE[q]);
-                      J->add(dof(i, 0), dof(i, q), (1 - S) * scale * dE[q]);
-                    }
-                }
+              // d/dp^w and d/dp^nw: dS/dp^w = -S', dS/dp^nw = S'.
+              J->add(dof(i, 1), dof(i, 0), dPV[0] * S - PV * dSdpc);
+              J->add(dof(i, 1), dof(i, 1), dPV[1] * S + PV * dSdpc);
+              J->add(dof(i, 0), dof(i, 0), dPV[0] * (1. - S) + PV * dSdpc);
+              J->add(dof(i, 0), dof(i, 1), dPV[1] * (1. - S) - PV * dSdpc);
             }
         }
       // Fluxes.
@@ -198,14 +305,14 @@ namespace porofrac
 
     template <int dim>
     std::array<double, 2>
-    TwoPhaseSolver<dim>::phase_volumes(const State &s, const std::vector<double> *pv) const
+    TwoPhaseSolver<dim>::phase_volumes(const State &s) const
     {
       std::array<double, 2> m{{0., 0.}};
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         if (!grid.is_dirichlet(i))
           {
             const double S  = saturation(s, i, grid.nodes[i].rock);
-            const double PV = pv ? (*pv)[i] : pore_volume(s, i);
+            const double PV = pore_volume(s, i);
             m[1] += PV * S;
             m[0] += PV * (1. - S);
           }
@@ -213,110 +320,20 @@ namespace porofrac
     }
 
     template <int dim>
-    void
-    TwoPhaseSolver<dim>::begin_time_step()
-    {
-      old_state = state;
-      old_pore_volume.resize(grid.n_nodes());
-      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-        old_pore_volume[i] = pore_volume(old_state, i);
-    }
-
-    template <int dim>
-    void
-    TwoPhaseSolver<dim>::set_biot_storage(const std::vector<double> &base,
-                                          const std::vector<double> &reference,
-                                          const double               inverse_modulus,
-                                          const bool                 with_energy)
-    {
-      AssertDimension(reference.size(), grid.n_matrix_cells);
-      biot_storage         = true;
-      p_E_reference        = reference;
-      inverse_biot_modulus = inverse_modulus;
-      capillary_energy     = with_energy;
-      set_porosity_base(base);
-    }
-
-    template <int dim>
-    void
-    TwoPhaseSolver<dim>::set_porosity_base(const std::vector<double> &base)
-    {
-      AssertDimension(base.size(), grid.n_matrix_cells);
-      porosity_base = base;
-    }
-
-    template <int dim>
-    double
-    TwoPhaseSolver<dim>::equivalent_pressure(const State &s, const unsigned int i) const
-    {
-      // (11d): p_E = p^w + p_c S - U(p_c) (Remark 3.1: without U).
-      const SaturationLaw &law = rocks[grid.nodes[i].rock].saturation;
-      const double         pc  = s[i][1] - s[i][0];
-      return s[i][0] + pc * law.saturation(pc) - (capillary_energy ? law.energy(pc) : 0.);
-    }
-
-    template <int dim>
-    std::array<double, 2>
-    TwoPhaseSolver<dim>::equivalent_pressure_derivatives(const State &s, const unsigned int i) const
-    {
-      // d/dp_c (p_c S - U) = S + p_c S' - U' = S since U' = p_c S'; without U: S + p_c S'.
-      const SaturationLaw &law  = rocks[grid.nodes[i].rock].saturation;
-      const double         pc   = s[i][1] - s[i][0];
-      const double         S    = law.saturation(pc);
-      const double         d_pc = capillary_energy ? S : S + pc * law.derivative(pc);
-      return {{1. - d_pc, d_pc}};
-    }
-
-    template <int dim>
-    double
-    TwoPhaseSolver<dim>::porosity(const State &s, const unsigned int K) const
-    {
-      if (!biot_storage)
-        return grid.porosity[K];
-      return porosity_base[K] + (equivalent_pressure(s, K) - p_E_reference[K]) * inverse_biot_modulus;
-    }
-
-    template <int dim>
-    double
-    TwoPhaseSolver<dim>::pore_volume(const State &s, const unsigned int i) const
-    {
-      if (biot_storage && i < grid.n_matrix_cells)
-        return grid.nodes[i].measure * porosity(s, i);
-      return grid.pore_volume(i);
-    }
-
-    template <int dim>
-    typename TwoPhaseSolver<dim>::EnergyExchange
-    TwoPhaseSolver<dim>::energy_exchange(const State &s, const double dt) const
-    {
-      // Testing (11a) with p^alpha: sum_i p_i (sum of outflows of i) = sum_c F_c (p_a - p_b)
-      // over connections between unknowns, plus F_c (p_a - p_b) + F_c p_b for a Dirichlet b.
-      EnergyExchange        e;
-      std::array<double, 4> d;
-      for (const auto &c : grid.connections)
-        {
-          const bool da = grid.is_dirichlet(c.a), db = grid.is_dirichlet(c.b);
-          if (da && db)
-            continue;
-          for (unsigned int phase = 0; phase < 2; ++phase)
-            {
-              const double F = dt * flux(c, s, phase, d);
-              e.dissipation += F * (s[c.a][phase] - s[c.b][phase]);
-              if (db)
-                e.boundary_work -= F * s[c.b][phase];
-              if (da)
-                e.boundary_work += F * s[c.a][phase];
-            }
-        }
-      return e;
-    }
-
-    template <int dim>
     std::array<double, 2>
     TwoPhaseSolver<dim>::mass_defect(const State &s, const State &old, const double dt) const
     {
-      const auto m_new = phase_volumes(s),
-                 m_old = phase_volumes(old, old_pore_volume.empty() ? nullptr : &old_pore_volume);
+      const auto            m_new = phase_volumes(s);
+      std::array<double, 2> m_old{{0., 0.}};
+      double                V = 0;
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (!grid.is_dirichlet(i))
+          {
+            const double S = saturation(old, i, grid.nodes[i].rock);
+            m_old[1] += old_pore_volume[i] * S;
+            m_old[0] += old_pore_volume[i] * (1. - S);
+            V += old_pore_volume[i];
+          }
       std::array<double, 2> outflow{{0., 0.}}, throughput{{0., 0.}};
       std::array<double, 4> d;
       for (const auto &c : grid.connections)
@@ -332,7 +349,6 @@ namespace porofrac
             }
         }
       // Relative to the larger of the pore volume and the volume that crossed the boundary.
-      const double V = total_pore_volume();
       return {{std::abs(m_new[0] - m_old[0] + outflow[0]) / std::max(V, throughput[0]),
                std::abs(m_new[1] - m_old[1] + outflow[1]) / std::max(V, throughput[1])}};
     }
@@ -348,6 +364,10 @@ namespace porofrac
       apply_dirichlet(state);
       for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
         {
+          // A non-finite state (initial guess or diverged update) is a failed step.
+          for (const auto &p : state)
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
+              return result;
           // Entry slope for the first iterations only, exact Jacobian afterwards.
           entry_slope_active = it < parameters.entry_slope_iterations;
           {
@@ -382,17 +402,19 @@ namespace porofrac
             std::unique_ptr<TimerOutput::Scope> t;
             if (timer)
               t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: linear solve (UMFPACK)");
+            // A singular or failed factorisation is a failed step (converged = false), never
+            // an exception: the caller cuts the time step.
             SparseDirectUMFPACK solver;
             try
               {
                 solver.initialize(jacobian);
+                update = residual;
+                solver.solve(update);
               }
             catch (...)
               {
                 return result;
               }
-            update = residual;
-            solver.solve(update);
           }
           // Appleyard-type chop: the capillary pressure of a node changes by at most
           // capillary_chop times the pressure scale of its saturation law per iteration.

@@ -28,7 +28,7 @@ main()
   for (auto &p : solver.state)
     p = {{1e5, 1e5}};
   solver.apply_dirichlet(solver.state);
-  solver.old_state = solver.state;
+  solver.begin_time_step();
   std::cout << "intersection nodes: " << grid.n_intersections << std::endl;
 
   ConditionalOStream quiet(std::cout, false);
@@ -64,7 +64,7 @@ main()
           for (unsigned int phase = 0; phase < 2; ++phase)
             if (big[i][phase] > 0)
               node_max = std::max(node_max, std::abs(sum[i][phase]) / big[i][phase]);
-      solver.old_state = solver.state;
+      solver.begin_time_step();
     }
   const auto   volumes = solver.phase_volumes(solver.state);
   double       sf_max  = 0;

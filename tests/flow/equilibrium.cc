@@ -23,7 +23,7 @@ main()
   solver.matrix_dirichlet       = {{0, p}, {1, p}, {2, p}, {3, p}};
   for (auto &q : solver.state)
     q = p;
-  solver.old_state = solver.state;
+  solver.begin_time_step();
   ConditionalOStream quiet(std::cout, false);
   unsigned int       iterations = 0;
   bool               converged  = true;
@@ -32,7 +32,7 @@ main()
       const auto r = solver.solve_time_step(100., quiet);
       converged    = converged && r.converged;
       iterations += r.iterations;
-      solver.old_state = solver.state;
+      solver.begin_time_step();
     }
   double change = 0;
   for (const auto &q : solver.state)

@@ -2,7 +2,8 @@
 // The analytic Newton Jacobian of the two-phase TPFA residual (exact mode, entry slope off)
 // against centred finite differences, on a network with an X and a T intersection and a fracture
 // reaching a Dirichlet boundary; van Genuchten-Mualem matrix, linear fracture k_r; a
-// pseudo-random two-phase state (p_c > 0 everywhere, both upwind directions present).
+// pseudo-random two-phase state (p_c > 0 everywhere, both upwind directions present); then with
+// the Biot storage of eq. (11d) (porosity depending on p^E, with and without U).
 #include <deal.II/lac/full_matrix.h>
 
 #include "flow_test_tools.h"
@@ -47,44 +48,88 @@ main()
     old[i][1] += 500. * rnd();
   const double dt = 50.;
 
-  Vector<double> r0, rp, rm;
-  solver.assemble(state, old, dt, r0, &solver.jacobian);
-  double err = 0, jmax = 0;
-  for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-    for (unsigned int phase = 0; phase < 2; ++phase)
-      {
-        const unsigned int col = solver.dof(i, phase);
-        if (col == numbers::invalid_unsigned_int)
-          continue;
-        const double h = 1e-2;
-        auto         sp = state, sm = state;
-        sp[i][phase] += h;
-        sm[i][phase] -= h;
-        solver.assemble(sp, old, dt, rp, nullptr);
-        solver.assemble(sm, old, dt, rm, nullptr);
-        for (unsigned int row = 0; row < r0.size(); ++row)
-          {
-            const double fd = (rp(row) - rm(row)) / (2 * h);
-            const double an = solver.sparsity.exists(row, col) ? solver.jacobian.el(row, col) : 0.;
-            if (fd != 0 && !solver.sparsity.exists(row, col))
-              std::cout << "FAILED: entry (" << row << ", " << col << ") missing from the pattern"
-                        << std::endl;
-            err  = std::max(err, std::abs(fd - an));
-            jmax = std::max(jmax, std::abs(an));
-          }
-      }
-  const double rel = err / jmax;
+  // Centred differences of the residual against the analytic Jacobian of @p solver at state.
+  const auto check = [&](flow::TwoPhaseSolver<2> &solver) {
+    // PV_old is the pore volume at begin_time_step(): store it for the old state.
+    solver.state = old;
+    solver.begin_time_step();
+    Vector<double> r0, rp, rm;
+    solver.assemble(state, old, dt, r0, &solver.jacobian);
+    double err = 0, jmax = 0;
+    for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+      for (unsigned int phase = 0; phase < 2; ++phase)
+        {
+          const unsigned int col = solver.dof(i, phase);
+          if (col == numbers::invalid_unsigned_int)
+            continue;
+          const double h = 1e-2;
+          auto         sp = state, sm = state;
+          sp[i][phase] += h;
+          sm[i][phase] -= h;
+          solver.assemble(sp, old, dt, rp, nullptr);
+          solver.assemble(sm, old, dt, rm, nullptr);
+          for (unsigned int row = 0; row < r0.size(); ++row)
+            {
+              const double fd = (rp(row) - rm(row)) / (2 * h);
+              const double an = solver.sparsity.exists(row, col) ? solver.jacobian.el(row, col) : 0.;
+              if (fd != 0 && !solver.sparsity.exists(row, col))
+                std::cout << "FAILED: entry (" << row << ", " << col << ") missing from the pattern"
+                          << std::endl;
+              err  = std::max(err, std::abs(fd - an));
+              jmax = std::max(jmax, std::abs(an));
+            }
+        }
+    return err / jmax;
+  };
+  const double rel = check(solver);
   std::cout << "max |J - J_FD| / max |J| below 1e-6: " << (rel < 1e-6 ? "yes" : "NO") << std::endl;
+
+  // Biot storage (eq. (11d)): phi_K = phi_base,K + (p^E_K - p^E_ref,K)/M depends on the unknowns,
+  // with and without the capillary energy U in p^E; 1/M large enough that phi varies by ~0.02.
+  std::vector<double> phi_base(grid.n_matrix_cells), p_E_ref(grid.n_matrix_cells);
+  for (unsigned int K = 0; K < grid.n_matrix_cells; ++K)
+    {
+      phi_base[K] = 0.15 + 0.1 * rnd();
+      p_E_ref[K]  = 1e5 + 2e4 * rnd();
+    }
+  bool biot_ok = true;
+  for (const bool capillary_energy : {true, false})
+    {
+      solver.set_biot_storage(phi_base, p_E_ref, 1e-6, capillary_energy);
+      const double rel_biot = check(solver);
+      // The porosity and p^E agree with their definitions.
+      double phi_err = 0;
+      for (unsigned int K = 0; K < grid.n_matrix_cells; ++K)
+        {
+          const auto  &law = rocks[0].saturation;
+          const double pc  = state[K][1] - state[K][0];
+          const double S   = law.saturation(pc);
+          const double pE  = (1 - S) * state[K][0] + S * state[K][1] -
+                            (capillary_energy ? law.energy(pc) : 0.);
+          phi_err = std::max({phi_err, std::abs(solver.equivalent_pressure(state, K) - pE) / 1e5,
+                              std::abs(solver.porosity(state, K) -
+                                       (phi_base[K] + (pE - p_E_ref[K]) * 1e-6))});
+        }
+      biot_ok = biot_ok && rel_biot < 1e-6 && phi_err < 1e-12;
+      std::cout << "Biot storage, capillary energy " << (capillary_energy ? "on" : "off")
+                << ": max |J - J_FD| / max |J| below 1e-6: " << (rel_biot < 1e-6 ? "yes" : "NO")
+                << ", porosity and p^E as defined: " << (phi_err < 1e-12 ? "yes" : "NO") << std::endl;
+    }
+  Vector<double> r0;
+  solver.assemble(state, old, dt, r0, nullptr);
 
   // With the entry slope the Jacobian differs only where p_c <= 0: identical here.
   flow::NewtonParameters n2;
   flow::TwoPhaseSolver<2> solver2(grid, rocks, n2);
   solver2.matrix_dirichlet   = solver.matrix_dirichlet;
   solver2.fracture_dirichlet = solver.fracture_dirichlet;
+  solver2.set_biot_storage(phi_base, p_E_ref, 1e-6, false);
+  solver2.state = old;
+  solver2.begin_time_step();
   Vector<double> r2;
   solver2.assemble(state, old, dt, r2, &solver2.jacobian);
   r2 -= r0;
   std::cout << "residual independent of the Jacobian mode: " << (r2.linfty_norm() == 0 ? "yes" : "NO")
             << std::endl;
-  return rel < 1e-6 ? 0 : 1;
+  return rel < 1e-6 && biot_ok && r2.linfty_norm() == 0 ? 0 : 1;
 }

@@ -24,7 +24,7 @@ main()
   for (auto &p : solver.state)
     p = {{1.5e5, 1.5e5}};
   solver.apply_dirichlet(solver.state);
-  solver.old_state = solver.state;
+  solver.begin_time_step();
   ConditionalOStream quiet(std::cout, std::getenv("V") != nullptr);
   const auto         result = solver.solve_time_step(1e6, quiet);
   std::cout << "converged: " << (result.converged ? "yes" : "no") << ", Newton iterations "

@@ -34,13 +34,13 @@ namespace
     for (auto &p : solver.state)
       p = {{1e5, 1e5}};
     solver.apply_dirichlet(solver.state);
-    solver.old_state = solver.state;
+    solver.begin_time_step();
     ConditionalOStream quiet(std::cout, false);
     for (unsigned int step = 0; step < 5; ++step)
       {
         if (!solver.solve_time_step(20., quiet).converged)
           std::cout << "FAILED: Newton" << std::endl;
-        solver.old_state = solver.state;
+        solver.begin_time_step();
       }
     Result r;
     for (unsigned int i = 0; i < grid.n_matrix_cells + grid.n_fracture_cells; ++i)

@@ -41,6 +41,18 @@ namespace porofrac
       bool kink_stop = true;
     };
 
+    /// Energy exchanged by the flow over one time step (coupled energy estimate, paper Section 4.2).
+    struct EnergyExchange
+    {
+      /// dt sum_alpha sum_c F^alpha_c (p^alpha_a - p^alpha_b) over connections between two
+      /// non-Dirichlet nodes (each term >= 0 by phase-potential upwinding).
+      double dissipation = 0;
+      /// -dt sum_alpha sum_{c with a Dirichlet end b} F^alpha_{c, a->b} p^alpha_b: the power
+      /// supplied through Dirichlet nodes. The dissipation dt F (p_a - p_b) >= 0 of the connections
+      /// to Dirichlet nodes is in neither term, so E^{n+1} - E^n + dissipation <= boundary_work.
+      double boundary_work = 0;
+    };
+
     /// Outcome of one implicit Euler step.
     struct StepResult
     {
@@ -59,8 +71,16 @@ namespace porofrac
      * eliminated by a local solver); they are massless, so their rows are pure flux balances.
      *
      * Equations (multiplied by dt, i.e. in units of volume): for node i and phase alpha,
-     *   PV_i (S^alpha_i - S^alpha_i,old) + dt sum_c F^alpha_c = 0,
+     *   PV_i(p_i) S^alpha_i - PV_i,old S^alpha_i,old + dt sum_c F^alpha_c = 0,
      *   F^alpha_c = T_c eta^alpha(S_up) (p^alpha_a - p^alpha_b), up = a if p^alpha_a >= p^alpha_b.
+     * PV_i,old is the pore volume stored by begin_time_step(), so porosity and aperture may change
+     * between steps. The matrix pore volume is |K| phi_K with, after set_biot_storage(), the
+     * linearised Biot storage of eq. (11d):
+     *   phi_K = porosity_base_K + (p^E_K - p^E_ref,K) / M,
+     *   p^E = sum_alpha p^alpha s^alpha - U(p_c) (eq. (6); without U with capillary_energy = false,
+     *   Remark 3.1), which depends on the unknowns (residual and Jacobian include it).
+     * Node numbering (TpfaGrid): matrix cell K is node K (active_cell_index); the fracture cell
+     * of CutMesh fracture face f is node n_matrix_cells + f.
      */
     template <int dim>
     class TwoPhaseSolver
@@ -68,6 +88,8 @@ namespace porofrac
     public:
       /// Per flow node: {p^w, p^nw} in Pa.
       using State = std::vector<std::array<double, 2>>;
+      /// Also reachable as TwoPhaseSolver<dim>::EnergyExchange.
+      using EnergyExchange = flow::EnergyExchange;
 
       TwoPhaseSolver(const TpfaGrid<dim>              &grid,
                      const std::array<RockType, 2>    &rocks,
@@ -107,71 +129,63 @@ namespace porofrac
         return rocks[rock].saturation.saturation(state[i][1] - state[i][0]);
       }
 
-      /// Mass (pore volume) of each phase over non-Dirichlet nodes, with the pore volumes of
-      /// @p state (or, if given, @p pore_volumes).
-      std::array<double, 2>
-      phase_volumes(const State &state, const std::vector<double> *pore_volumes = nullptr) const;
-
-      /// Per phase: |mass change + dt * net outflow into Dirichlet nodes| / max(total pore
-      /// volume, dt * sum of |boundary fluxes|), computed independently of the residual.
-      std::array<double, 2>
-      mass_defect(const State &state, const State &old, const double dt) const;
-
-      /// Newton for one step from old_state to state (state holds the initial guess). Never
-      /// throws on non-convergence: the result says converged = false.
-      StepResult
-      solve_time_step(const double dt, ConditionalOStream &verbose);
-
-      /**
-       * Starts a time step: old_state = state, and the pore volume of every node is stored as
-       * the old one, so that the accumulation of scheme (11a) is (PV S)^{n+1} - (PV S)^n even
-       * when porosity and apertures change between steps (coupled scenes).
-       */
+      /// Start of a time step: old_state = state, and stores the pore volume of every node
+      /// (grid porosity or Biot porosity of old_state, current grid.aperture) as PV_old.
       void
       begin_time_step();
 
       /**
-       * Biot storage of paper eq. (11d) in matrix cells: phi_K = porosity_base_K + (p_E,K -
-       * p_E_reference_K) * inverse_biot_modulus, with p_E the equivalent pressure of the
-       * current unknowns (implicit: residual and Jacobian include it). Without a call, phi_K is
-       * the grid's porosity. Vectors per matrix cell (active cell index).
+       * Biot storage in matrix cells (eq. (11d)): phi_K = porosity_base[K] + (p^E_K -
+       * p_E_reference[K]) * inverse_biot_modulus, vectors per matrix cell (active_cell_index),
+       * p^E with the capillary energy U of the rock's law if @p capillary_energy (paper eq. (6)),
+       * else sum_alpha p^alpha s^alpha (Remark 3.1). Without a call, phi_K = grid.porosity[K].
+       * Takes effect for the pore volume of the current state; PV_old is the one stored by
+       * begin_time_step(). InputError("Flow/Biot modulus") for a negative or non-finite 1/M.
        */
       void
       set_biot_storage(const std::vector<double> &porosity_base,
                        const std::vector<double> &p_E_reference,
                        const double               inverse_biot_modulus,
                        const bool                 capillary_energy);
-      /// Replaces porosity_base (phi_0 + b div(u - u_0) from the mechanics).
+
+      /// Replaces porosity_base (e.g. phi_0 + b div(u - u_0) from the mechanics), keeping the
+      /// reference p^E and 1/M of set_biot_storage() (without it: 1/M = 0).
       void
       set_porosity_base(const std::vector<double> &porosity_base);
 
-      /**
-       * p_E = sum_alpha p^alpha s^alpha - U(p_c) of node i (11d) with its rock's laws; without
-       * U if the Biot storage was set with capillary_energy = false (Remark 3.1). Matrix cells
-       * are nodes 0..n_matrix_cells-1, the fracture cell of CutMesh fracture face f is node
-       * n_matrix_cells + f.
-       */
+      /// Equivalent pressure p^E = sum_alpha p^alpha s^alpha - U(p_c) of node @p node (matrix
+      /// cell K = node K, fracture cell of fracture face f = node n_matrix_cells + f), with its
+      /// rock's law; without U if capillary_energy = false in set_biot_storage().
       double
-      equivalent_pressure(const State &s, const unsigned int i) const;
-      /// Porosity of matrix cell K in state @p s (the Biot law if set, else the grid's).
-      double
-      porosity(const State &s, const unsigned int K) const;
-      /// Pore volume of node i in state @p s (|K| phi_K, |sigma| d_f, 0 for massless nodes).
-      double
-      pore_volume(const State &s, const unsigned int i) const;
+      equivalent_pressure(const State &state, const unsigned int node) const;
 
-      /// Energy exchanged during a step (paper estimate (19), doc/coupling.md).
-      struct EnergyExchange
-      {
-        /// dt sum_alpha sum_c F^alpha_c (p^alpha_a - p^alpha_b) over every connection with an
-        /// unknown end (>= 0 with upwinded, non-negative mobilities).
-        double dissipation = 0;
-        /// -dt sum_alpha sum_c F^alpha_{a->b} p^alpha_b over connections to Dirichlet nodes b:
-        /// the energy supplied through the Dirichlet boundaries.
-        double boundary_work = 0;
-      };
+      /// Porosity phi_K of matrix cell @p K in @p state (see set_biot_storage()).
+      double
+      porosity(const State &state, const unsigned int K) const;
+
+      /// Pore volume of node @p i in @p state: |K| phi_K(state), |sigma| d_f (grid.aperture), or 0.
+      double
+      pore_volume(const State &state, const unsigned int i) const;
+
+      /// Mass (pore volume) of each phase over non-Dirichlet nodes, with pore_volume(state, i).
+      std::array<double, 2>
+      phase_volumes(const State &state) const;
+
+      /// Per phase: |mass change + dt * net outflow into Dirichlet nodes| / max(total pore
+      /// volume, dt * sum of |boundary fluxes|), computed independently of the residual; the
+      /// old mass uses the pore volumes stored by begin_time_step() and @p old's saturations.
+      std::array<double, 2>
+      mass_defect(const State &state, const State &old, const double dt) const;
+
+      /// Dissipation and boundary work of the step ending in @p state (see EnergyExchange).
       EnergyExchange
-      energy_exchange(const State &s, const double dt) const;
+      energy_exchange(const State &state, const double dt) const;
+
+      /// Newton for one step from old_state to state (state holds the initial guess). Never
+      /// throws on failure: converged = false (non-convergence, non-finite values, singular
+      /// matrix).
+      StepResult
+      solve_time_step(const double dt, ConditionalOStream &verbose);
 
       State state;
       State old_state;
@@ -190,15 +204,17 @@ namespace porofrac
       SparseMatrix<double> jacobian;
 
     private:
-      std::vector<double>       old_pore_volume; ///< empty until begin_time_step()
-      bool                      biot_storage = false;
-      std::vector<double>       porosity_base, p_E_reference;
-      double                    inverse_biot_modulus = 0;
-      bool                      capillary_energy     = true;
-      /// d p_E / d (p^w, p^nw) of node i.
-      std::array<double, 2>
-      equivalent_pressure_derivatives(const State &s, const unsigned int i) const;
       std::vector<unsigned int> node_dof;
+      /// Pore volume of every node at begin_time_step().
+      std::vector<double> old_pore_volume;
+      /// Biot storage (set_biot_storage); biot = false: phi_K = grid.porosity[K].
+      bool                biot = false;
+      std::vector<double> porosity_base_, p_E_reference_;
+      double              inverse_biot_modulus_ = 0;
+      bool                capillary_energy_     = true;
+      /// Pore volume of node i and its derivatives with respect to (p^w_i, p^nw_i).
+      double
+      pore_volume(const State &state, const unsigned int i, std::array<double, 2> &derivative) const;
       unsigned int              n_free;
       double                    total_pore_volume() const;
       double                    pressure_scale(const Rock rock) const;
