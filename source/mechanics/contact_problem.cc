@@ -6,6 +6,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -490,40 +492,74 @@ namespace porofrac
     }
 
     template <int dim>
-    double
-    ContactProblem<dim>::relative_residual() const
+    typename ContactProblem<dim>::ResidualParts
+    ContactProblem<dim>::residual_parts(const double c) const
     {
+      ResidualParts parts;
       // Mechanical rows: f - K u - B^T lambda on unconstrained dofs.
       Vector<double> r(dof_handler.n_dofs());
       apply_elasticity(r);
       r.sadd(-1., f);
-      double fnorm2 = 0;
       for (unsigned int fi = 0; fi < coupling.size(); ++fi)
         for (const auto &e : coupling[fi])
           r(e.dof) -= e.value * lambda(dim * fi + e.component);
-      double rn2 = 0;
       for (unsigned int i = 0; i < r.size(); ++i)
         if (!constraints.is_constrained(i))
           {
-            rn2 += r(i) * r(i);
-            fnorm2 += f(i) * f(i);
+            parts.mechanical += r(i) * r(i);
+            parts.load += f(i) * f(i);
           }
       // Contact rows, (25)-(26) scaled to stress units, weighted by |sigma|.
-      double c2 = 0, l2 = 0, cj2 = 0;
       for (unsigned int fi = 0; fi < coupling.size(); ++fi)
         {
           const Tensor<2, dim>        R = frame(fi);
-          const LocalContactLaw<dim> law{friction_values[fi], prm.c};
+          const LocalContactLaw<dim> law{friction_values[fi], c};
           const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
           const double                w = face_measures[fi];
-          c2 += w * law.residual(l, j, true).norm_square();
-          l2 += w * l.norm_square();
-          cj2 += w * (prm.c * j).norm_square();
+          parts.contact += w * law.residual(l, j, true).norm_square();
+          parts.lambda += w * l.norm_square();
+          parts.c_jump += w * (c * j).norm_square();
         }
-      const double scale  = (l2 > 0 ? l2 : cj2);
-      const double rel_c  = (scale > 0 ? std::sqrt(c2 / scale) : std::sqrt(c2));
-      const double rel_m  = std::sqrt(rn2) / std::max(std::sqrt(fnorm2), 1e-300);
-      return std::max(rel_c, fnorm2 > 0 ? rel_m : 0.);
+      return parts;
+    }
+
+    template <int dim>
+    double
+    ContactProblem<dim>::merit(const ResidualParts &r, const double scale2)
+    {
+      const double rel_c = (scale2 > 0 ? std::sqrt(r.contact / scale2) : std::sqrt(r.contact));
+      const double rel_m = (r.load > 0 ? std::sqrt(r.mechanical / r.load) : 0.);
+      return std::max(rel_c, rel_m);
+    }
+
+    template <int dim>
+    double
+    ContactProblem<dim>::relative_residual() const
+    {
+      // max(|C| / |lambda|, |f - K u - B^T lambda| / |f|); |c [u]| scales C when lambda = 0.
+      const ResidualParts r = residual_parts(prm.c);
+      return merit(r, r.lambda > 0 ? r.lambda : r.c_jump);
+    }
+
+    template <int dim>
+    double
+    ContactProblem<dim>::time_linear_solve() const
+    {
+      // Linear elasticity with every fracture open: the multiplier rows read lambda = 0.
+      Timer               clock;
+      SparseMatrix<double> A(sparsity);
+      A.copy_from(base_matrix);
+      const unsigned int n_u = dof_handler.n_dofs();
+      for (unsigned int i = n_u; i < n_dofs(); ++i)
+        A.set(i, i, 1.);
+      Vector<double> rhs(n_dofs()), x(n_dofs());
+      for (unsigned int i = 0; i < n_u; ++i)
+        rhs(i) = constraints_hom.is_constrained(i) ? 0. : f(i);
+      clock.restart();
+      SparseDirectUMFPACK direct;
+      direct.initialize(A);
+      direct.vmult(x, rhs);
+      return clock.wall_time();
     }
 
     template <int dim>
@@ -532,7 +568,15 @@ namespace porofrac
     {
       const unsigned int n_u = dof_handler.n_dofs();
       const unsigned int N   = n_dofs();
+      const unsigned int n_f = coupling.size();
+      check_input(prm.cycle_damping >= 0 && prm.cycle_damping < 1, "Mechanics/Cycle damping",
+                  "must be in [0, 1)");
+      check_input(prm.c_start >= 0, "Mechanics/Continuation c start", "must be >= 0");
+      check_input(prm.continuation_factor > 1, "Mechanics/Continuation factor", "must be > 1");
       residual_history.clear();
+      step_history.clear();
+      backtracks = cycles_detected = 0;
+      time_contact_rows = time_factorization = time_solves = time_residuals = 0;
       converged = false;
       if (!(warm_start && solved_once))
         {
@@ -547,32 +591,42 @@ namespace porofrac
                 lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
         }
       solved_once = true;
-      Vector<double> rhs(N), delta(N);
-      std::vector<Tensor<2, dim>> AlR(coupling.size()), AjR(coupling.size());
+      // Continuation in c: the complementarity functions (25)-(26) have the same zeros for every
+      // c > 0, so c may move from c_start to the target during the iterations.
+      double c_now = (prm.c_start > 0 ? prm.c_start : prm.c);
+      // Face states of every iterate, for the cycling safeguard.
+      std::vector<std::vector<FaceState>> seen_states;
+      Vector<double> rhs(N), delta(N), u_old(n_u), lambda_old(lambda.size());
+      Timer          clock;
+      std::vector<Tensor<2, dim>> AlR(n_f), AjR(n_f);
+      factorizations = reused_factorizations = 0;
       for (iterations = 1; iterations <= prm.max_iterations; ++iterations)
         {
-          bool same_matrix = factorization != nullptr;
+          std::vector<FaceState> states(n_f);
+          bool                   same_matrix = factorization != nullptr;
           {
             TimerOutput::Scope t(timer, "Mechanics: contact update");
+            clock.restart();
             rhs = 0;
             // Mechanical residual f - K u - B^T lambda.
             Vector<double> r(n_u);
             apply_elasticity(r);
             for (unsigned int i = 0; i < n_u; ++i)
               rhs(i) = constraints_hom.is_constrained(i) ? 0. : f(i) - r(i);
-            for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+            for (unsigned int fi = 0; fi < n_f; ++fi)
               for (const auto &e : coupling[fi])
                 if (!constraints_hom.is_constrained(e.dof))
                   rhs(e.dof) -= e.value * lambda(dim * fi + e.component);
-            // Contact rows A_l R lambda + A_j R [u] = r, written for the increment.
-            for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+            // Contact rows A_l R lambda + A_j R [u] = r (Section 5.1 / specs.md 3a), for the
+            // increment.
+            for (unsigned int fi = 0; fi < n_f; ++fi)
               {
                 const Tensor<2, dim>        R = frame(fi);
-                const LocalContactLaw<dim> law{friction_values[fi], prm.c};
+                const LocalContactLaw<dim> law{friction_values[fi], c_now};
                 const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
                 Tensor<2, dim>              Al, Aj;
                 Tensor<1, dim>              r_loc;
-                law.rows(prm.method, l, j, Al, Aj, r_loc);
+                states[fi] = law.rows(prm.method, l, j, Al, Aj, r_loc);
                 const Tensor<1, dim> res = r_loc - Al * l - Aj * j;
                 AlR[fi]                  = Al * R;
                 AjR[fi]                  = Aj * R;
@@ -601,33 +655,152 @@ namespace porofrac
                       }
                   }
               }
+            time_contact_rows += clock.wall_time();
           }
           {
             TimerOutput::Scope t(timer, "Mechanics: factorization and solve");
-            if (!same_matrix)
+            // The factorization is exact while no face row changed (the active set method with
+            // an unchanged active set, e.g. warm-started coupled solves). Otherwise only face rows
+            // changed (often few of them): optionally try GMRES preconditioned by the last LU
+            // factors, which converges in about as many steps as the rank of the change; else
+            // refactorize.
+            bool solved = false;
+            if (same_matrix)
               {
+                clock.restart();
+                factorization->vmult(delta, rhs);
+                time_solves += clock.wall_time();
+                solved = true;
+              }
+            if (!solved && factorization && prm.reuse_iterations > 0)
+              {
+                clock.restart();
+                SolverControl control(prm.reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
+                SolverGMRES<Vector<double>> gmres(
+                  control, SolverGMRES<Vector<double>>::AdditionalData(
+                             prm.reuse_iterations + 2, true));
+                delta = 0;
+                try
+                  {
+                    gmres.solve(system_matrix, delta, rhs, *factorization);
+                    solved = true;
+                    ++reused_factorizations;
+                  }
+                catch (const SolverControl::NoConvergence &)
+                  {}
+                time_solves += clock.wall_time();
+              }
+            if (!solved)
+              {
+                clock.restart();
                 factorization = std::make_unique<SparseDirectUMFPACK>();
-                factorization->initialize(system_matrix);
+                factorization->factorize(system_matrix);
                 factorized_AlR = AlR;
                 factorized_AjR = AjR;
+                ++factorizations;
                 ++n_factorizations;
+                time_factorization += clock.wall_time();
+                clock.restart();
+                factorization->vmult(delta, rhs);
+                time_solves += clock.wall_time();
               }
-            factorization->vmult(delta, rhs);
           }
-          for (unsigned int i = 0; i < n_u; ++i)
-            u(i) += delta(i);
-          for (unsigned int i = 0; i < lambda.size(); ++i)
-            lambda(i) += delta(n_u + i);
+
+          // Safeguard against active-set cycling: states equal to those of an earlier iterate
+          // other than the previous one mean the iteration revisits a set; damp the step.
+          double alpha_max = 1;
+          if (prm.cycle_damping > 0)
+            {
+              for (unsigned int k = 0; k + 1 < seen_states.size(); ++k)
+                if (seen_states[k] == states && seen_states.back() != states)
+                  {
+                    alpha_max = prm.cycle_damping;
+                    ++cycles_detected;
+                    progress << "    contact iteration " << iterations
+                             << ": face states repeat those of iteration " << k + 1
+                             << "; step damped by " << prm.cycle_damping << std::endl;
+                    break;
+                  }
+            }
+          seen_states.push_back(states);
+
+          TimerOutput::Scope t(timer, "Mechanics: contact update");
+          clock.restart();
+          u_old      = u;
+          lambda_old = lambda;
+          auto set_step = [&](const double alpha) {
+            for (unsigned int i = 0; i < n_u; ++i)
+              u(i) = u_old(i) + alpha * delta(i);
+            for (unsigned int i = 0; i < lambda.size(); ++i)
+              lambda(i) = lambda_old(i) + alpha * delta(n_u + i);
+          };
+          double alpha = alpha_max;
+          set_step(alpha);
+          if (prm.line_search)
+            {
+              // Backtracking (Armijo) on the merit max(|C|/S, |r_mech|/|f|) of eqs. (25)-(26)
+              // with one multiplier scale S for all trial steps (the larger of the current and
+              // the full-step multipliers).
+              const ResidualParts trial = residual_parts(c_now);
+              std::swap(u, u_old);
+              std::swap(lambda, lambda_old);
+              const ResidualParts current = residual_parts(c_now);
+              std::swap(u, u_old);
+              std::swap(lambda, lambda_old);
+              double scale2 = std::max(trial.lambda, current.lambda);
+              if (scale2 <= 0)
+                scale2 = std::max(trial.c_jump, current.c_jump);
+              // Non-monotone reference (Grippo-Lampariello-Lucidi): the largest of the current
+              // merit and the relative residuals of the last `memory - 1` iterates.
+              double phi0 = merit(current, scale2);
+              for (unsigned int k = 1; k < prm.line_search_memory && k < residual_history.size();
+                   ++k)
+                phi0 = std::max(phi0, residual_history[residual_history.size() - 1 - k]);
+              double       phi      = merit(trial, scale2);
+              double       best     = phi, best_alpha = alpha;
+              unsigned int halvings = 0;
+              while (phi > (1 - 1e-4 * alpha) * phi0 && halvings < prm.line_search_halvings)
+                {
+                  alpha /= 2;
+                  ++halvings;
+                  ++backtracks;
+                  set_step(alpha);
+                  phi = merit(residual_parts(c_now), scale2);
+                  if (phi < best)
+                    {
+                      best       = phi;
+                      best_alpha = alpha;
+                    }
+                }
+              // No sufficient decrease: keep the best step tried.
+              if (phi > (1 - 1e-4 * alpha) * phi0 && best_alpha != alpha)
+                {
+                  alpha = best_alpha;
+                  set_step(alpha);
+                }
+            }
+          step_history.push_back(alpha);
           const double res = relative_residual();
+          time_residuals += clock.wall_time();
           residual_history.push_back(res);
           progress << "    contact iteration " << iterations << ": relative residual "
-                   << std::scientific << std::setprecision(3) << res << std::defaultfloat
-                   << std::endl;
-          if (res <= prm.tolerance)
+                   << std::scientific << std::setprecision(3) << res << std::defaultfloat;
+          if (alpha != 1)
+            progress << ", step " << alpha;
+          if (c_now != prm.c)
+            progress << ", c = " << c_now;
+          progress << std::endl;
+          if (res <= prm.tolerance && c_now == prm.c)
             {
               converged = true;
               return;
             }
+          // Continuation: move c towards the target once the face states are those of the
+          // previous iterate (the active set has settled for this c).
+          if (c_now != prm.c && seen_states.size() > 1 &&
+              seen_states[seen_states.size() - 2] == states)
+            c_now = (c_now < prm.c ? std::min(prm.c, c_now * prm.continuation_factor) :
+                                     std::max(prm.c, c_now / prm.continuation_factor));
         }
       iterations = prm.max_iterations;
       std::ostringstream s;

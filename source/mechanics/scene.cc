@@ -37,6 +37,35 @@ namespace porofrac
       prm.declare_entry("Max iterations", "50", Patterns::Integer(1), "Contact iterations.");
       prm.declare_entry("Tolerance", "1e-6", Patterns::Double(),
                         "Relative residual of the contact iterations.");
+      prm.declare_entry("Line search", "false", Patterns::Bool(),
+                        "Globalization: backtracking (Armijo) line search on the merit "
+                        "max(scaled residual of (25)-(26) / |lambda|, mechanical residual / |f|).");
+      prm.declare_entry("Line search halvings", "6", Patterns::Integer(0),
+                        "At most this many step halvings per iteration; without sufficient "
+                        "decrease the best step tried is taken.");
+      prm.declare_entry("Line search memory", "1", Patterns::Integer(1),
+                        "Sufficient decrease is measured against the largest merit of the last "
+                        "M iterates (non-monotone line search); 1 is the monotone Armijo rule.");
+      prm.declare_entry("Cycle damping", "0", Patterns::Double(),
+                        "Globalization: when the face states (open/stick/slip) of an iterate "
+                        "repeat those of an earlier, non-consecutive iterate, the step is "
+                        "multiplied by this factor in (0, 1); 0 switches the safeguard off.");
+      prm.declare_entry("Continuation c start", "0", Patterns::Double(),
+                        "Globalization: continuation in c; the iterations start with this c and "
+                        "move it towards `Complementarity parameter c` by `Continuation factor` "
+                        "whenever the face states of an iterate equal those of the previous one "
+                        "(0: off).");
+      prm.declare_entry("Continuation factor", "100", Patterns::Double(),
+                        "Factor (> 1) by which c moves at each continuation step.");
+      prm.declare_entry("Reuse factorization iterations", "0", Patterns::Integer(0),
+                        "Linear solves of the contact iterations: first try GMRES preconditioned "
+                        "by the LU factors of the last factorized matrix (only face rows change), "
+                        "at most this many GMRES steps (relative residual 1e-12), then "
+                        "refactorize; 0 factorizes every iteration.");
+      prm.declare_entry("Report linear solve time", "false", Patterns::Bool(),
+                        "Also time one linear elasticity solve (every fracture open, UMFPACK "
+                        "factorization + solve) on the same mesh; written to summary.json "
+                        "(mechanics/linear_solve_time_s).");
       prm.declare_entry("Dirichlet", "", Patterns::Anything(),
                         "Prescribed displacement components per outer boundary id, "
                         "'id: x=expr, y=expr; id: ...' (muparser in x, y, z).");
@@ -98,6 +127,19 @@ namespace porofrac
       r.max_iterations   = Utilities::string_to_int(prm.get(p, "Max iterations"));
       r.tolerance        = get_double("Tolerance");
       check_input(r.tolerance > 0, "Mechanics/Tolerance", "must be positive");
+      r.line_search          = prm.get(p, "Line search") == "true";
+      r.line_search_halvings = Utilities::string_to_int(prm.get(p, "Line search halvings"));
+      r.line_search_memory   = Utilities::string_to_int(prm.get(p, "Line search memory"));
+      r.cycle_damping        = get_double("Cycle damping");
+      check_input(r.cycle_damping >= 0 && r.cycle_damping < 1, "Mechanics/Cycle damping",
+                  "must be in [0, 1)");
+      r.c_start = get_double("Continuation c start");
+      check_input(r.c_start >= 0, "Mechanics/Continuation c start", "must be >= 0");
+      r.continuation_factor = get_double("Continuation factor");
+      check_input(r.continuation_factor > 1, "Mechanics/Continuation factor", "must be > 1");
+      r.time_linear_solve = prm.get(p, "Report linear solve time") == "true";
+      r.reuse_iterations =
+        Utilities::string_to_int(prm.get(p, "Reuse factorization iterations"));
       r.dirichlet = parse_component_map(prm.get(p, "Dirichlet"), dim, "Mechanics/Dirichlet");
       r.traction  = parse_component_map(prm.get(p, "Traction"), dim, "Mechanics/Traction");
       for (const auto &[id, e] :
@@ -154,7 +196,18 @@ namespace porofrac
                      << problem.n_dofs() - problem.n_displacement_dofs() << " multiplier)"
                      << std::endl;
       context.summary["n_dofs_mechanics"] = problem.n_dofs();
-      problem.solve();
+      double linear_time = 0;
+      if (cp.time_linear_solve)
+        {
+          linear_time = problem.time_linear_solve();
+          context.progress << "    one linear elasticity solve: " << linear_time << " s"
+                           << std::endl;
+        }
+      {
+        Timer clock;
+        problem.solve();
+        context.summary["contact_solve_time_s"] = clock.wall_time();
+      }
 
       unsigned int counts[3] = {0, 0, 0};
       for (unsigned int f = 0; f < mesh.fracture_faces.size(); ++f)
@@ -233,6 +286,19 @@ namespace porofrac
       m["n_stick"]              = counts[1];
       m["n_slip"]               = counts[2];
       m["residuals"]            = problem.residual_history;
+      m["steps"]                = problem.step_history;
+      m["line_search_backtracks"] = problem.backtracks;
+      m["cycles_detected"]        = problem.cycles_detected;
+      m["factorizations"]         = problem.factorizations;
+      m["reused_factorizations"]  = problem.reused_factorizations;
+      io::Json timing             = io::Json::object();
+      timing["contact_rows_s"]    = problem.time_contact_rows;
+      timing["factorization_s"]   = problem.time_factorization;
+      timing["triangular_solves_s"] = problem.time_solves;
+      timing["residuals_s"]       = problem.time_residuals;
+      m["timing"]                 = timing;
+      if (cp.time_linear_solve)
+        m["linear_solve_time_s"] = linear_time;
       context.summary["mechanics"] = m;
 
       // fractures.csv

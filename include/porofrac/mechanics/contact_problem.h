@@ -115,9 +115,23 @@ namespace porofrac
       FaceState
       state(const unsigned int f) const;
 
+      /// Factorizes and solves the system with every fracture open (lambda = 0): the cost of one
+      /// linear elasticity solve on this mesh, in seconds (wall clock). Leaves u, lambda untouched.
+      double
+      time_linear_solve() const;
+
       unsigned int iterations = 0;
       bool         converged  = false;
       std::vector<double> residual_history;
+      /// Step lengths taken (1 = full step), line-search backtracks, detected active-set cycles.
+      std::vector<double> step_history;
+      unsigned int        backtracks      = 0;
+      unsigned int        cycles_detected = 0;
+      /// LU factorizations, and linear solves done by GMRES on the previous LU factors.
+      unsigned int factorizations = 0, reused_factorizations = 0;
+      /// Wall time (s) spent in solve() on: contact rows, factorization, triangular solves,
+      /// residual / line-search evaluations.
+      double time_contact_rows = 0, time_factorization = 0, time_solves = 0, time_residuals = 0;
 
       const DoFHandler<dim> &
       get_dof_handler() const
@@ -147,9 +161,20 @@ namespace porofrac
       assemble_elasticity();
       void
       assemble_coupling();
+      /// Squared, |sigma|-weighted norms at the current iterate with parameter @p c: scaled
+      /// complementarity residual (25)-(26), multipliers, c [u]; mechanical residual and load.
+      struct ResidualParts
+      {
+        double contact = 0, lambda = 0, c_jump = 0, mechanical = 0, load = 0;
+      };
+      ResidualParts
+      residual_parts(const double c) const;
       /// Scaled contact residual (stress units) and mechanical residual, relative.
       double
       relative_residual() const;
+      /// Line-search merit: like relative_residual() but with a given multiplier scale.
+      static double
+      merit(const ResidualParts &r, const double scale2);
       /// r = K u (unconstrained elasticity operator).
       void
       apply_elasticity(Vector<double> &r) const;

@@ -46,6 +46,24 @@ namespace porofrac
       /// coordinate 1 = r >= 0; hoop strain u_r / r and integrals weighted by 2 pi r.
       bool   axisymmetric    = false;
       double pre_stress_hoop = 0; ///< sigma0_theta theta (Pa), axisymmetric mode only
+
+      /// Globalization of the contact iterations (all off by default: the paper's plain method).
+      /// Backtracking line search on the merit max(scaled (25)-(26) residual, mechanical residual).
+      bool         line_search          = false;
+      unsigned int line_search_halvings = 6; ///< at most this many step halvings
+      unsigned int line_search_memory   = 1; ///< 1: monotone; M: compare with the last M merits
+      /// Active-set cycling safeguard: when the face states of an iterate repeat those of an
+      /// earlier, non-consecutive iterate, the step is multiplied by this factor (0: off).
+      double cycle_damping = 0;
+      /// Continuation in c (eqs. (25)-(26)): start with this c (0: off) and move c towards the
+      /// target by the factor below whenever the face states stop changing.
+      double c_start             = 0;
+      double continuation_factor = 100;
+      /// Reuse of the LU factors: GMRES preconditioned by the last factorization, at most this
+      /// many iterations before refactorizing (0: factorize every iteration).
+      unsigned int reuse_iterations = 0;
+      /// Measure one linear elasticity solve (all fractures open) on the same mesh.
+      bool time_linear_solve = false;
     };
 
     /**
