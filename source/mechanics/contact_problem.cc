@@ -538,6 +538,7 @@ namespace porofrac
       Timer          clock;
       std::unique_ptr<SparseDirectUMFPACK> direct; // LU factors of the last factorized matrix
       factorizations = reused_factorizations = 0;
+      bool line_search_on = false;
       for (iterations = 1; iterations <= prm.max_iterations; ++iterations)
         {
           std::vector<FaceState> states(n_f);
@@ -648,7 +649,14 @@ namespace porofrac
           };
           double alpha = alpha_max;
           set_step(alpha);
-          if (prm.line_search)
+          // The line search runs from the start, or (trigger on stagnation) from the first
+          // iterate whose relative residual did not decrease.
+          const unsigned int nr = residual_history.size();
+          if (prm.line_search && !line_search_on &&
+              (!prm.line_search_on_stagnation ||
+               (nr > 1 && residual_history[nr - 1] >= residual_history[nr - 2])))
+            line_search_on = true;
+          if (line_search_on)
             {
               // Backtracking (Armijo) on the merit max(|C|/S, |r_mech|/|f|) of eqs. (25)-(26)
               // with one multiplier scale S for all trial steps (the larger of the current and
