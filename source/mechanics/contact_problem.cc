@@ -587,8 +587,13 @@ namespace porofrac
             // Only face rows change between iterations (often few of them): first try GMRES
             // preconditioned by the last LU factors, which converges in about as many steps as
             // the rank of the change; refactorize when it does not.
+            // GMRES needs about (changed rows + 1) steps: skip it when more face states changed.
+            unsigned int changed = 0;
+            if (!seen_states.empty())
+              for (unsigned int fi = 0; fi < n_f; ++fi)
+                changed += (seen_states.back()[fi] != states[fi]);
             bool solved = false;
-            if (direct && prm.reuse_iterations > 0)
+            if (direct && prm.reuse_iterations > 0 && dim * changed < prm.reuse_iterations)
               {
                 clock.restart();
                 SolverControl control(prm.reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
