@@ -600,6 +600,7 @@ namespace porofrac
       Timer          clock;
       std::vector<Tensor<2, dim>> AlR(n_f), AjR(n_f);
       factorizations = reused_factorizations = 0;
+      bool line_search_on = false;
       for (iterations = 1; iterations <= prm.max_iterations; ++iterations)
         {
           std::vector<FaceState> states(n_f);
@@ -662,8 +663,12 @@ namespace porofrac
             // The factorization is exact while no face row changed (the active set method with
             // an unchanged active set, e.g. warm-started coupled solves). Otherwise only face rows
             // changed (often few of them): optionally try GMRES preconditioned by the last LU
-            // factors, which converges in about as many steps as the rank of the change; else
-            // refactorize.
+            // factors, which needs about (changed rows + 1) steps, so only when few face states
+            // changed; else refactorize.
+            unsigned int changed = 0;
+            if (!seen_states.empty())
+              for (unsigned int fi = 0; fi < n_f; ++fi)
+                changed += (seen_states.back()[fi] != states[fi]);
             bool solved = false;
             if (same_matrix)
               {
@@ -672,7 +677,8 @@ namespace porofrac
                 time_solves += clock.wall_time();
                 solved = true;
               }
-            if (!solved && factorization && prm.reuse_iterations > 0)
+            if (!solved && factorization && prm.reuse_iterations > 0 &&
+                dim * changed < prm.reuse_iterations)
               {
                 clock.restart();
                 SolverControl control(prm.reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
@@ -736,7 +742,14 @@ namespace porofrac
           };
           double alpha = alpha_max;
           set_step(alpha);
-          if (prm.line_search)
+          // The line search runs from the start, or (trigger on stagnation) from the first
+          // iterate whose relative residual did not decrease.
+          const unsigned int nr = residual_history.size();
+          if (prm.line_search && !line_search_on &&
+              (!prm.line_search_on_stagnation ||
+               (nr > 1 && residual_history[nr - 1] >= residual_history[nr - 2])))
+            line_search_on = true;
+          if (line_search_on)
             {
               // Backtracking (Armijo) on the merit max(|C|/S, |r_mech|/|f|) of eqs. (25)-(26)
               // with one multiplier scale S for all trial steps (the larger of the current and

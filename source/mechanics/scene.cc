@@ -46,6 +46,10 @@ namespace porofrac
       prm.declare_entry("Line search memory", "1", Patterns::Integer(1),
                         "Sufficient decrease is measured against the largest merit of the last "
                         "M iterates (non-monotone line search); 1 is the monotone Armijo rule.");
+      prm.declare_entry("Line search trigger", "always", Patterns::Selection("always|stagnation"),
+                        "always: from the first iteration; stagnation: full steps until the "
+                        "relative residual of an iterate is not below that of the previous one, "
+                        "the line search from then on.");
       prm.declare_entry("Cycle damping", "0", Patterns::Double(),
                         "Globalization: when the face states (open/stick/slip) of an iterate "
                         "repeat those of an earlier, non-consecutive iterate, the step is "
@@ -130,6 +134,7 @@ namespace porofrac
       r.line_search          = prm.get(p, "Line search") == "true";
       r.line_search_halvings = Utilities::string_to_int(prm.get(p, "Line search halvings"));
       r.line_search_memory   = Utilities::string_to_int(prm.get(p, "Line search memory"));
+      r.line_search_on_stagnation = prm.get(p, "Line search trigger") == "stagnation";
       r.cycle_damping        = get_double("Cycle damping");
       check_input(r.cycle_damping >= 0 && r.cycle_damping < 1, "Mechanics/Cycle damping",
                   "must be in [0, 1)");

@@ -52,6 +52,8 @@ namespace porofrac
       bool         line_search          = false;
       unsigned int line_search_halvings = 6; ///< at most this many step halvings
       unsigned int line_search_memory   = 1; ///< 1: monotone; M: compare with the last M merits
+      /// Switch the line search on only once the relative residual stops decreasing.
+      bool line_search_on_stagnation = false;
       /// Active-set cycling safeguard: when the face states of an iterate repeat those of an
       /// earlier, non-consecutive iterate, the step is multiplied by this factor (0: off).
       double cycle_damping = 0;
