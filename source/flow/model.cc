@@ -70,6 +70,10 @@ namespace porofrac
       newton.update_tolerance   = get_double(prm, flow, "Update tolerance");
       newton.mass_tolerance     = get_double(prm, flow, "Mass balance tolerance");
       newton.capillary_chop     = get_double(prm, flow, "Capillary chop");
+      newton.saturation_chop    = get_double(prm, flow, "Saturation chop");
+      newton.entry_slope_iterations =
+        Utilities::string_to_int(prm.get(flow, "Entry slope iterations"));
+      check_input(newton.saturation_chop < 1, "Flow/Saturation chop", "must be below 1");
       newton.entry_slope        = prm.get(flow, "Entry slope in Jacobian") == "true";
       if (adjust_newton)
         adjust_newton(newton);

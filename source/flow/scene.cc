@@ -92,6 +92,13 @@ namespace porofrac
       prm.declare_entry("Capillary chop", "1", Patterns::Double(0),
                         "Newton: largest change of a node's capillary pressure per iteration, in "
                         "units of the Corey R or van Genuchten P_r of its rock (0: no limit).");
+      prm.declare_entry("Entry slope iterations", "1000", Patterns::Integer(0),
+                        "Newton: number of iterations per time step that use the entry slope "
+                        "(see Entry slope in Jacobian); later iterations use the exact Jacobian.");
+      prm.declare_entry("Saturation chop", "0", Patterns::Double(0),
+                        "Newton: largest change of a node's non-wetting saturation per "
+                        "iteration (Appleyard chop; 0: no limit). Interface nodes are limited "
+                        "under both the matrix and the fracture law.");
       prm.declare_entry("Entry slope in Jacobian", "true", Patterns::Bool(),
                         "Newton: use S'(0+) instead of 0 in the Jacobian where p_c <= 0 (false: "
                         "exact Jacobian).");

@@ -3,6 +3,7 @@
 #include <deal.II/lac/sparse_direct.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/flow/sparse_lu.h>
 #include <porofrac/flow/two_phase_solver.h>
 
 #include <cmath>
@@ -43,6 +44,7 @@ namespace porofrac
       sparsity.copy_from(dsp);
       mean_pore_volume = total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       jacobian.reinit(sparsity);
+      lu = std::make_shared<SparseLU>();
       state.assign(grid.n_nodes(), {{0., 0.}});
       begin_time_step();
     }
@@ -273,6 +275,22 @@ namespace porofrac
           }
     }
 
+    namespace
+    {
+      /// The p_c closest to @p pc_new such that |S(p_c) - S(pc_old)| <= max_change.
+      double
+      limit_saturation_change(const SaturationLaw &law, const double pc_old, const double pc_new,
+                              const double max_change)
+      {
+        const double S_old = law.saturation(pc_old), S_new = law.saturation(pc_new);
+        if (std::abs(S_new - S_old) <= max_change)
+          return pc_new;
+        const double S_target = S_new > S_old ? S_old + max_change : S_old - max_change;
+        // S_target lies strictly between S_old and S_new, so in [0, 1).
+        return law.inverse(std::min(std::max(S_target, 0.), 1. - 1e-16), "Flow/Saturation chop");
+      }
+    } // namespace
+
     template <int dim>
     double
     TwoPhaseSolver<dim>::slope(const RockType &rock, const double pc) const
@@ -404,12 +422,11 @@ namespace porofrac
               t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: linear solve (UMFPACK)");
             // A singular or failed factorisation is a failed step (converged = false), never
             // an exception: the caller cuts the time step.
-            SparseDirectUMFPACK solver;
             try
               {
-                solver.initialize(jacobian);
+                lu->factorize(jacobian);
                 update = residual;
-                solver.solve(update);
+                lu->solve(update);
               }
             catch (...)
               {
@@ -418,35 +435,71 @@ namespace porofrac
           }
           // Appleyard-type chop: the capillary pressure of a node changes by at most
           // capillary_chop times the pressure scale of its saturation law per iteration.
-          double p_max = 0, du_max = 0;
+          double       p_max = 0, du_max = 0;
+          unsigned int argmax = 0, n_kink_crossings = 0, n_chopped = 0;
           for (unsigned int i = 0; i < grid.n_nodes(); ++i)
             if (!grid.is_dirichlet(i))
               {
-                const double dpw  = -update(dof(i, 0));
-                double       dpc  = -update(dof(i, 1)) - dpw;
+                const std::array<double, 2> dp = {{-update(dof(i, 0)), -update(dof(i, 1))}};
+                const double                pc_old = state[i][1] - state[i][0];
+                double                      dpc    = dp[1] - dp[0];
                 // Interface nodes carry both laws (matrix on the cell side): use the larger scale.
+                const bool interface = grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface;
                 const double scale =
-                  grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface ?
-                    std::max(pressure_scale(matrix_rock), pressure_scale(fracture_rock)) :
-                    pressure_scale(grid.nodes[i].rock);
+                  interface ? std::max(pressure_scale(matrix_rock), pressure_scale(fracture_rock)) :
+                              pressure_scale(grid.nodes[i].rock);
                 const double lim = parameters.capillary_chop * scale;
                 if (lim > 0 && std::abs(dpc) > lim)
                   dpc = dpc > 0 ? lim : -lim;
                 // Stop at the kink of S at p_c = 0 when leaving the two-phase region.
-                const double pc_old = state[i][1] - state[i][0];
                 if (parameters.kink_stop && pc_old > 0 && pc_old + dpc < 0)
                   dpc = -pc_old;
                 // Entering: the entry-slope linearization is about p_c = 0, so a node with
                 // p_c < 0 that the Newton step pushes up starts from the kink.
                 if (parameters.entry_slope && pc_old < 0 && dpc > 0)
                   dpc -= pc_old;
+                // Saturation chop: |Delta S| <= saturation_chop under the node's law (both laws
+                // at interface nodes, whose matrix-side mobility uses the matrix law).
+                if (parameters.saturation_chop > 0)
+                  {
+                    double pc_new = pc_old + dpc;
+                    for (unsigned int r = 0; r < 2; ++r)
+                      if (interface || r == grid.nodes[i].rock)
+                        pc_new = limit_saturation_change(rocks[r].saturation, pc_old, pc_new,
+                                                         parameters.saturation_chop);
+                    dpc = pc_new - pc_old;
+                  }
+                // Keep the update of the phase that fills most of the node's pores (the one
+                // whose pressure the fluxes determine best); the other follows from p_c.
+                const bool nw_dominant =
+                  rocks[grid.nodes[i].rock].saturation.saturation(pc_old) > 0.5;
+                const double dpw = nw_dominant ? dp[1] - dpc : dp[0];
                 state[i][0] += dpw;
                 state[i][1] += dpw + dpc;
                 for (unsigned int phase = 0; phase < 2; ++phase)
                   p_max = std::max(p_max, std::abs(state[i][phase]));
-                du_max = std::max({du_max, std::abs(dpw), std::abs(dpw + dpc)});
+                const double du = std::max(std::abs(dpw), std::abs(dpw + dpc));
+                if (du > du_max)
+                  {
+                    du_max   = du;
+                    argmax   = i;
+                  }
+                if ((pc_old > 0) != (pc_old + dpc > 0))
+                  ++n_kink_crossings;
+                if (std::abs(dpc - (dp[1] - dp[0])) > 1e-12 * std::abs(dp[1] - dp[0]))
+                  ++n_chopped;
               }
           last_update = du_max / std::max(p_max, 1e-300);
+          {
+            static const char *kinds[] = {"matrix", "fracture", "interface", "intersection",
+                                          "dirichlet", "dirichlet"};
+            const double pc = state[argmax][1] - state[argmax][0];
+            verbose << "        largest update at " << kinds[static_cast<int>(grid.nodes[argmax].kind)]
+                    << " node " << argmax << " (p_c = " << pc << ", S = "
+                    << saturation(state, argmax, grid.nodes[argmax].rock) << "), "
+                    << n_kink_crossings << " nodes crossed p_c = 0, " << n_chopped
+                    << " chopped" << std::endl;
+          }
           if (!std::isfinite(last_update))
             return result;
           result.iterations = it + 1;

@@ -9,10 +9,12 @@
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/flow/laws.h>
+#include <porofrac/flow/sparse_lu.h>
 #include <porofrac/flow/tpfa_grid.h>
 
 #include <array>
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace porofrac
@@ -32,6 +34,9 @@ namespace porofrac
       /// Largest change of a node's capillary pressure per iteration, in units of the pressure
       /// scale (R or P_r) of its rock's saturation law; 0 = no limit.
       double capillary_chop = 1.;
+      /// Largest change of a node's non-wetting saturation per iteration (Appleyard chop); at
+      /// interface nodes under both the matrix and the fracture law. 0 = no limit.
+      double saturation_chop = 0.;
       /// Jacobian only: use the entry slope S'(0+) instead of 0 where p_c <= 0 (inexact Newton
       /// across the kink of S at p_c = 0). false = exact analytic Jacobian.
       bool entry_slope = true;
@@ -204,6 +209,8 @@ namespace porofrac
       SparseMatrix<double> jacobian;
 
     private:
+      /// LU of the Jacobian; keeps the symbolic analysis of the fixed sparsity pattern.
+      std::shared_ptr<SparseLU> lu;
       std::vector<unsigned int> node_dof;
       /// Pore volume of every node at begin_time_step().
       std::vector<double> old_pore_volume;
