@@ -26,14 +26,14 @@
 // states. Study knobs (environment): SC1D_LEVELS, SC1D_N0, SC1D_T, SC1D_STEPS_PER_COLUMN,
 // SC1D_ASPECT, SC1D_P_IN, SC1D_R, SC1D_MU_NW, SC1D_RTOL, SC1D_UTOL; V=1 prints profiles and
 // errors against the finest level.
-#include "flow_test_tools.h"
-
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
+
+#include "flow_test_tools.h"
 
 using namespace porofrac;
 using namespace dealii;
@@ -91,8 +91,8 @@ namespace
   LevelResult
   run(const unsigned int N)
   {
-    const double aspect = env("ASPECT", 0.5);
-    const auto   raw    = crossed_strip(N, aspect);
+    const double               aspect = env("ASPECT", 0.5);
+    const auto                 raw    = crossed_strip(N, aspect);
     const geometry::CutMesh<2> mesh(raw);
     flow::TpfaGrid<2>          grid(mesh, false, {0, 1}, {});
     grid.porosity.assign(grid.n_matrix_cells, 0.2);
@@ -145,9 +145,11 @@ namespace
     result.column_saturation.assign(N, 0.);
     for (const auto &cell : mesh.triangulation.active_cell_iterators())
       {
-        const unsigned int K      = cell->active_cell_index();
-        const unsigned int column = std::min<unsigned int>(N - 1, std::floor(cell->center()[0] * N));
-        result.column_saturation[column] += 0.25 * solver.saturation(solver.state, K, flow::matrix_rock);
+        const unsigned int K = cell->active_cell_index();
+        const unsigned int column =
+          std::min<unsigned int>(N - 1, std::floor(cell->center()[0] * N));
+        result.column_saturation[column] +=
+          0.25 * solver.saturation(solver.state, K, flow::matrix_rock);
       }
     return result;
   }
@@ -183,7 +185,8 @@ main()
     std::cout << levels[l].steps << (l + 1 < n_levels ? ", " : "\n");
   std::cout << "Newton failures: " << failures << std::endl;
   std::cout << "max per-step relative mass defect " << std::scientific << std::setprecision(1)
-            << mass_defect << ", below 1e-10: " << (mass_defect < 1e-10 ? "yes" : "NO") << std::endl;
+            << mass_defect << ", below 1e-10: " << (mass_defect < 1e-10 ? "yes" : "NO")
+            << std::endl;
   if (std::getenv("V"))
     {
       std::cout << "  Newton iterations:";
@@ -204,8 +207,8 @@ main()
   for (unsigned int l = 0; l + 1 < n_levels; ++l)
     {
       const auto  &coarse = levels[l].column_saturation, &fine = levels[l + 1].column_saturation;
-      const double h      = 1. / sizes[l];
-      double       sum    = 0;
+      const double h   = 1. / sizes[l];
+      double       sum = 0;
       for (unsigned int j = 0; j < sizes[l]; ++j)
         sum += h * std::abs(coarse[j] - 0.5 * (fine[2 * j] + fine[2 * j + 1]));
       e.push_back(sum);
