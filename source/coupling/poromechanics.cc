@@ -128,8 +128,7 @@ namespace porofrac
       report.flow_newton_iterations += r.iterations;
       report.mass_defect = r.mass_defect;
       if (!r.converged)
-        throw SolverFailure("two-phase flow Newton did not converge in " +
-                            std::to_string(r.iterations) + " iterations");
+        throw SolverFailure("two-phase flow Newton failed: " + r.failure);
       flow_guess = solver.state;
     }
 

@@ -201,6 +201,11 @@ namespace porofrac
       // Inside coupled iterations the flow Newton must be converged tightly (see
       // CouplingParameters); the deck's tolerances are the upper bounds.
       flow::FlowModel<dim> flow = flow::make_flow_model<dim>(prm, mesh, [&](flow::NewtonParameters &n) {
+        // At its noise floor (kinks of S and of the upwinding), accept an inner solve that meets
+        // the flow deck's own tolerances instead of cutting the step.
+        n.stagnation_update_tolerance = n.update_tolerance;
+        n.stagnation_mass_tolerance   = 1e-10; // the per-step conservation target
+
         n.residual_tolerance = std::min(n.residual_tolerance, parameters.inner_flow_residual_tolerance);
         n.update_tolerance   = std::min(n.update_tolerance, parameters.inner_flow_update_tolerance);
       });

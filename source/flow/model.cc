@@ -71,6 +71,8 @@ namespace porofrac
       newton.mass_tolerance     = get_double(prm, flow, "Mass balance tolerance");
       newton.capillary_chop     = get_double(prm, flow, "Capillary chop");
       newton.saturation_chop    = get_double(prm, flow, "Saturation chop");
+      newton.stagnation_iterations =
+        Utilities::string_to_int(prm.get(flow, "Stagnation iterations"));
       newton.entry_slope_iterations =
         Utilities::string_to_int(prm.get(flow, "Entry slope iterations"));
       check_input(newton.saturation_chop < 1, "Flow/Saturation chop", "must be below 1");
@@ -93,6 +95,16 @@ namespace porofrac
       grid.aperture.assign(grid.n_fracture_cells, model.initial_aperture);
       grid.normal_transmissibility =
         get_double(prm, {"Flow", "Fracture"}, "Normal transmissibility");
+      grid.damaged_layer_thickness =
+        get_double(prm, {"Flow", "Fracture"}, "Damaged layer thickness");
+      grid.damaged_layer_porosity = get_double(prm, {"Flow", "Fracture"}, "Damaged layer porosity");
+      check_input(grid.damaged_layer_thickness >= 0, "Flow/Fracture/Damaged layer thickness",
+                  "must be non-negative");
+      check_input(grid.damaged_layer_porosity >= 0 && grid.damaged_layer_porosity < 1,
+                  "Flow/Fracture/Damaged layer porosity", "must lie in [0, 1)");
+      check_input(grid.damaged_layer_thickness == 0 || grid.damaged_layer_porosity > 0,
+                  "Flow/Fracture/Damaged layer porosity",
+                  "must be positive when the damaged layer thickness is");
       grid.update_transmissibilities();
 
       model.solver = std::make_unique<TwoPhaseSolver<dim>>(grid, model.rocks, newton);

@@ -95,6 +95,9 @@ namespace porofrac
       prm.declare_entry("Entry slope iterations", "1000", Patterns::Integer(0),
                         "Newton: number of iterations per time step that use the entry slope "
                         "(see Entry slope in Jacobian); later iterations use the exact Jacobian.");
+      prm.declare_entry("Stagnation iterations", "10", Patterns::Integer(0),
+                        "Newton: give up (and cut the time step) after this many iterations in "
+                        "which neither the residual nor the mass defect halved (0: never).");
       prm.declare_entry("Saturation chop", "0", Patterns::Double(0),
                         "Newton: largest change of a node's non-wetting saturation per "
                         "iteration (Appleyard chop; 0: no limit). Interface nodes are limited "
@@ -115,6 +118,12 @@ namespace porofrac
       prm.declare_entry("Aperture", "1e-3", Patterns::Double(), "Initial aperture d_f (m).");
       prm.declare_entry("Normal transmissibility", "1e-9", Patterns::Double(),
                         "Lambda_f of eq. (3) (m).");
+      prm.declare_entry("Damaged layer thickness", "0", Patterns::Double(),
+                        "d_a: thickness of the damaged layer on each side of a fracture, the pore "
+                        "space of the matrix-fracture interface unknowns (m; 0: massless "
+                        "interfaces). The layer uses the fracture's laws.");
+      prm.declare_entry("Damaged layer porosity", "0", Patterns::Double(),
+                        "phi_a: porosity of the damaged layer (-).");
       prm.leave_subsection();
       prm.enter_subsection("Boundary conditions");
       prm.declare_entry("Matrix", "", Patterns::Anything(),
@@ -340,8 +349,8 @@ namespace porofrac
                 throw SolverFailure("Flow: Newton did not converge at t = " + std::to_string(t) +
                                     " s after " + std::to_string(max_cut) + " time-step cuts");
               dt_step /= 2;
-              context.progress << "    Flow: Newton failed, halving the time step to "
-                               << dt_step << " s" << std::endl;
+              context.progress << "    Flow: Newton failed (" << result.failure
+                               << "), halving the time step to " << dt_step << " s" << std::endl;
             }
           ++step;
           t += dt_step;

@@ -318,6 +318,13 @@ namespace porofrac
         return nodes[i].measure * porosity[i];
       if (i < n_matrix_cells + n_fracture_cells)
         return nodes[i].measure * aperture[i - n_matrix_cells];
+      if (nodes[i].kind == NodeKind::interface)
+        {
+          // Interface node 2 s + side of fracture face s, whose fracture cell has measure |sigma|.
+          const unsigned int s = (i - n_matrix_cells - n_fracture_cells) / 2;
+          return nodes[n_matrix_cells + s].measure * damaged_layer_thickness *
+                 damaged_layer_porosity;
+        }
       return 0.;
     }
 

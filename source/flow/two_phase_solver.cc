@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <iomanip>
+#include <sstream>
 
 namespace porofrac
 {
@@ -379,13 +380,18 @@ namespace porofrac
       Vector<double> residual, update(2 * n_free);
       double         r0          = 0;
       double         last_update = std::numeric_limits<double>::infinity();
+      double         best_residual = std::numeric_limits<double>::infinity(), best_mass = best_residual;
+      unsigned int   last_progress = 0;
       apply_dirichlet(state);
       for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
         {
           // A non-finite state (initial guess or diverged update) is a failed step.
           for (const auto &p : state)
             if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
-              return result;
+              {
+                result.failure = "non-finite pressures";
+                return result;
+              }
           // Entry slope for the first iterations only, exact Jacobian afterwards.
           entry_slope_active = it < parameters.entry_slope_iterations;
           {
@@ -397,7 +403,10 @@ namespace porofrac
           entry_slope_active = false;
           const double r = residual.l2_norm();
           if (!std::isfinite(r))
-            return result;
+            {
+              result.failure = "non-finite residual";
+              return result;
+            }
           if (it == 0)
             r0 = std::max(r, residual_scale);
           result.mass_defect = mass_defect(state, old_state, dt);
@@ -414,8 +423,36 @@ namespace porofrac
               result.iterations = it;
               return result;
             }
+          const double mass = std::max(result.mass_defect[0], result.mass_defect[1]);
+          if (r < 0.5 * best_residual || mass < 0.5 * best_mass)
+            last_progress = it;
+          best_residual = std::min(best_residual, r);
+          best_mass     = std::min(best_mass, mass);
           if (it == parameters.max_iterations)
-            break;
+            {
+              result.failure = "no convergence in " + std::to_string(it) + " iterations";
+              break;
+            }
+          if (parameters.stagnation_iterations > 0 &&
+              it >= last_progress + parameters.stagnation_iterations)
+            {
+              const double mass_bound = parameters.stagnation_mass_tolerance > 0 ?
+                                          parameters.stagnation_mass_tolerance :
+                                          parameters.mass_tolerance;
+              if (mass < mass_bound && last_update < parameters.stagnation_update_tolerance)
+                {
+                  verbose << "      Newton: stagnated within the fallback update tolerance, accepted"
+                          << std::endl;
+                  result.converged  = true;
+                  result.iterations = it;
+                  return result;
+                }
+              std::ostringstream msg;
+              msg << "stagnation: neither |R| (" << r << ") nor the mass defect (" << mass
+                  << ") halved in " << parameters.stagnation_iterations << " iterations";
+              result.failure = msg.str();
+              break;
+            }
           {
             std::unique_ptr<TimerOutput::Scope> t;
             if (timer)
@@ -430,7 +467,10 @@ namespace porofrac
               }
             catch (...)
               {
-                return result;
+                {
+                  result.failure = "singular Jacobian (UMFPACK failed)";
+                  return result;
+                }
               }
           }
           // Appleyard-type chop: the capillary pressure of a node changes by at most
@@ -501,7 +541,10 @@ namespace porofrac
                     << " chopped" << std::endl;
           }
           if (!std::isfinite(last_update))
-            return result;
+            {
+              result.failure = "non-finite update";
+              return result;
+            }
           result.iterations = it + 1;
         }
       return result;

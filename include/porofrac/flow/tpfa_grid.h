@@ -104,7 +104,8 @@ namespace porofrac
       void
       update_transmissibilities();
 
-      /// Pore measure of node i: |K| phi_K, |sigma| d_f, or 0.
+      /// Pore measure of node i: |K| phi_K, |sigma| d_f, |sigma| d_a phi_a for an interface node
+      /// (damaged layer), or 0.
       double
       pore_volume(const unsigned int i) const;
 
@@ -119,6 +120,11 @@ namespace porofrac
         return nodes[i].kind == NodeKind::dirichlet_matrix ||
                nodes[i].kind == NodeKind::dirichlet_fracture;
       }
+
+      /// Damaged layer on each side of a fracture (specs.md 3b): thickness d_a (m) and porosity
+      /// phi_a; its saturation law is the fracture's (rock a = f, as in 5.3). 0 = massless
+      /// interface nodes.
+      double damaged_layer_thickness = 0, damaged_layer_porosity = 0;
 
       std::vector<Node>       nodes;
       std::vector<Connection> connections;

@@ -15,6 +15,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace porofrac
@@ -42,6 +43,15 @@ namespace porofrac
       bool entry_slope = true;
       /// Number of Newton iterations per step that use the entry slope.
       unsigned int entry_slope_iterations = 1000;
+      /// Give up (so that the caller cuts the time step) after this many iterations in which
+      /// neither the residual nor the mass defect fell below half its best value; 0 = never.
+      unsigned int stagnation_iterations = 10;
+      /// If positive, a stagnated solve whose last normalized update is below this value and
+      /// whose mass defect meets mass_tolerance counts as converged (inner solves of a coupling
+      /// loop ask for tighter tolerances than Newton's noise floor allows).
+      double stagnation_update_tolerance = 0.;
+      /// Mass-defect bound of that fallback (0: mass_tolerance).
+      double stagnation_mass_tolerance = 0.;
       /// Newton: a node leaving the two-phase region (p_c > 0 to p_c < 0) stops at p_c = 0 first.
       bool kink_stop = true;
     };
@@ -64,6 +74,8 @@ namespace porofrac
       bool                  converged  = false;
       unsigned int          iterations = 0;
       std::array<double, 2> mass_defect{{0., 0.}};
+      /// Why a step failed (empty if converged).
+      std::string failure;
     };
 
     /**
