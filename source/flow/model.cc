@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
 #include <porofrac/base/exceptions.h>
@@ -6,6 +7,7 @@
 #include <porofrac/flow/scene.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace porofrac
@@ -123,6 +125,36 @@ namespace porofrac
                             p_f;
       solver.apply_dirichlet(solver.state);
       solver.begin_time_step();
+
+      // Matrix sources h^alpha(x) (1/s, volume of phase per bulk volume), |K| h^alpha per cell.
+      std::array<std::string, 2> source_expression = {
+        {prm.get({"Flow", "Matrix"}, "Source w"), prm.get({"Flow", "Matrix"}, "Source nw")}};
+      if (source_expression[0] != "0" || source_expression[1] != "0")
+        {
+          solver.source.assign(grid.n_nodes(), {{0., 0.}});
+          for (unsigned int phase = 0; phase < 2; ++phase)
+            {
+              const std::string name =
+                std::string("Flow/Matrix/Source ") + (phase == 0 ? "w" : "nw");
+              FunctionParser<dim> h(1);
+              try
+                {
+                  h.initialize(dim == 2 ? "x,y" : "x,y,z", source_expression[phase], {});
+                  h.value(Point<dim>()); // deal.II parses lazily: force it here
+                }
+              catch (...)
+                {
+                  throw InputError(name, "cannot parse '" + source_expression[phase] +
+                                           "' as a muparser expression of x, y (, z)");
+                }
+              for (unsigned int K = 0; K < grid.n_matrix_cells; ++K)
+                {
+                  const double value = h.value(grid.nodes[K].centre);
+                  check_input(std::isfinite(value), name, "is not finite at a cell centre");
+                  solver.source[K][phase] = grid.nodes[K].measure * value;
+                }
+            }
+        }
       return model;
     }
 

@@ -112,6 +112,11 @@ namespace porofrac
       prm.declare_entry("Porosity", "0.15", Patterns::Double(), "Initial porosity phi_0 (-).");
       prm.declare_entry("Permeability", "5e-20", Patterns::Double(),
                         "K_0 of the Kozeny-Carman law, K at phi_0 (m^2).");
+      prm.declare_entry("Source w", "0", Patterns::Anything(),
+                        "Wetting-phase source h^w of scheme (11a): volume of phase per bulk "
+                        "volume and second (1/s), muparser in x, y (, z); negative = sink.");
+      prm.declare_entry("Source nw", "0", Patterns::Anything(),
+                        "Non-wetting-phase source h^nw (1/s), as Source w.");
       prm.leave_subsection();
       declare_rock(prm, "Fracture", "1e2", "linear", "1e5");
       prm.enter_subsection("Fracture");

@@ -165,6 +165,12 @@ namespace porofrac
                 e.boundary_work += dt * F * s[c.a][phase];
             }
         }
+      // Sources supply dt |K| h^alpha p^alpha.
+      if (!source.empty())
+        for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+          if (!grid.is_dirichlet(i))
+            for (unsigned int phase = 0; phase < 2; ++phase)
+              e.boundary_work += dt * source[i][phase] * s[i][phase];
       return e;
     }
 
@@ -253,6 +259,12 @@ namespace porofrac
               J->add(dof(i, 0), dof(i, 1), dPV[1] * (1. - S) - PV * dSdpc);
             }
         }
+      // Sources |K| h^alpha (scheme (11a)), on the right-hand side.
+      if (!source.empty())
+        for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+          if (node_dof[i] != numbers::invalid_unsigned_int)
+            for (unsigned int phase = 0; phase < 2; ++phase)
+              residual(dof(i, phase)) -= dt * source[i][phase];
       // Fluxes.
       std::array<double, 4> d;
       for (const auto &c : grid.connections)
@@ -367,6 +379,15 @@ namespace porofrac
               throughput[phase] += std::abs(F);
             }
         }
+      // Sources add volume: m_new - m_old = dt sum |K| h - outflow.
+      if (!source.empty())
+        for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+          if (!grid.is_dirichlet(i))
+            for (unsigned int phase = 0; phase < 2; ++phase)
+              {
+                outflow[phase] -= dt * source[i][phase];
+                throughput[phase] += std::abs(dt * source[i][phase]);
+              }
       // Relative to the larger of the pore volume and the volume that crossed the boundary.
       return {{std::abs(m_new[0] - m_old[0] + outflow[0]) / std::max(V, throughput[0]),
                std::abs(m_new[1] - m_old[1] + outflow[1]) / std::max(V, throughput[1])}};

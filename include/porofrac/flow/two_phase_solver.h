@@ -63,7 +63,7 @@ namespace porofrac
       /// non-Dirichlet nodes (each term >= 0 by phase-potential upwinding).
       double dissipation = 0;
       /// -dt sum_alpha sum_{c with a Dirichlet end b} F^alpha_{c, a->b} p^alpha_b: the power
-      /// supplied through Dirichlet nodes. The dissipation dt F (p_a - p_b) >= 0 of the connections
+      /// supplied through Dirichlet nodes, plus dt sum |K| h^alpha p^alpha of the sources. The dissipation dt F (p_a - p_b) >= 0 of the connections
       /// to Dirichlet nodes is in neither term, so E^{n+1} - E^n + dissipation <= boundary_work.
       double boundary_work = 0;
     };
@@ -206,6 +206,9 @@ namespace porofrac
 
       State state;
       State old_state;
+      /// Volumetric source of each phase per node (m^3/s, already integrated over the node's
+      /// weighted measure: |K| h^alpha_K of scheme (11a)); empty = no sources.
+      std::vector<std::array<double, 2>> source;
       /// If positive, the residual tolerance is relative to max(|R_0|, residual_scale) instead
       /// of |R_0|: warm-started solves inside coupled iterations start next to the solution, so
       /// |R_0| is no scale for them (the coupler passes the residual of the step's old state).
