@@ -178,6 +178,7 @@ namespace porofrac
       TimerOutput::Scope t(timer, "Mechanics: setup");
       dof_handler.distribute_dofs(fe);
       make_constraints();
+      schur.reset();
 
       const unsigned int n_u = dof_handler.n_dofs();
       const unsigned int N   = n_dofs();
@@ -517,6 +518,7 @@ namespace porofrac
           const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
           const double                w = face_measures[fi];
           parts.contact += w * law.residual(l, j, true).norm_square();
+          parts.contact_unscaled += w * law.residual(l, j, false).norm_square();
           parts.lambda += w * l.norm_square();
           parts.c_jump += w * (c * j).norm_square();
         }
@@ -563,6 +565,24 @@ namespace porofrac
     }
 
     template <int dim>
+    double
+    ContactProblem<dim>::time_linear_solve_cholesky() const
+    {
+      // Linear elasticity with every fracture open: K u = f, Cholesky factorization of the
+      // constrained elasticity block + one solve.
+      Timer              clock;
+      const unsigned int n_u = dof_handler.n_dofs();
+      Vector<double>     x(n_u);
+      for (unsigned int i = 0; i < n_u; ++i)
+        x(i) = constraints_hom.is_constrained(i) ? 0. : f(i);
+      clock.restart();
+      SparseCholesky cholesky;
+      cholesky.factorize(base_matrix, n_u);
+      cholesky.solve(x);
+      return clock.wall_time();
+    }
+
+    template <int dim>
     void
     ContactProblem<dim>::solve(const bool warm_start)
     {
@@ -574,10 +594,29 @@ namespace porofrac
       check_input(prm.c_start >= 0, "Mechanics/Continuation c start", "must be >= 0");
       check_input(prm.continuation_factor > 1, "Mechanics/Continuation factor", "must be > 1");
       residual_history.clear();
+      initial_relative_history.clear();
       step_history.clear();
       backtracks = cycles_detected = 0;
       time_contact_rows = time_factorization = time_solves = time_residuals = 0;
+      time_cholesky = time_form_W = 0;
       converged = false;
+      if (prm.schur_complement && !schur)
+        {
+          TimerOutput::Scope t(timer, "Mechanics: Schur complement setup");
+          std::vector<bool>  constrained(n_u);
+          for (unsigned int i = 0; i < n_u; ++i)
+            constrained[i] = constraints_hom.is_constrained(i);
+          schur = std::make_unique<MultiplierSchurComplement<dim>>(base_matrix, n_u, coupling,
+                                                                   face_measures, constrained);
+          time_cholesky = schur->time_cholesky;
+          time_form_W   = schur->time_form_W;
+          progress << "    Schur complement: Cholesky of K (" << n_u << " dofs, "
+                   << schur->cholesky().factor_nonzeros() << " nonzeros in L) "
+                   << time_cholesky << " s, W (" << dim * n_f << "^2, "
+                   << schur->reach_entries << " nonzeros in L^{-1} P J^T) " << time_form_W
+                   << " s"
+                   << std::endl;
+        }
       if (!(warm_start && solved_once))
         {
           // Initial guess: u = 0 (plus Dirichlet values); open lambda = 0, or stick
@@ -591,6 +630,8 @@ namespace porofrac
                 lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
         }
       solved_once = true;
+      const ResidualParts g0 = residual_parts(prm.c);
+      const double        g0_norm2 = g0.mechanical + g0.contact_unscaled;
       // Continuation in c: the complementarity functions (25)-(26) have the same zeros for every
       // c > 0, so c may move from c_start to the target during the iterations.
       double c_now = (prm.c_start > 0 ? prm.c_start : prm.c);
@@ -639,7 +680,7 @@ namespace porofrac
             // The Jacobian only depends on the face rows: when none changed (the active set
             // method with an unchanged active set, e.g. in warm-started coupled solves), the
             // factorization is reused.
-            if (!same_matrix)
+            if (!same_matrix && !prm.schur_complement)
               {
                 system_matrix.copy_from(base_matrix);
                 for (unsigned int fi = 0; fi < coupling.size(); ++fi)
@@ -670,7 +711,18 @@ namespace porofrac
               for (unsigned int fi = 0; fi < n_f; ++fi)
                 changed += (seen_states.back()[fi] != states[fi]);
             bool solved = false;
-            if (same_matrix)
+            if (prm.schur_complement)
+              {
+                // Schur complement on the multipliers (multiplier_schur_complement.h).
+                const double lu0 = schur->time_dense_lu, s0 = schur->time_solves;
+                if (!schur->set_rows(AlR, AjR))
+                  ++factorizations;
+                schur->solve(rhs, delta);
+                time_factorization += schur->time_dense_lu - lu0;
+                time_solves += schur->time_solves - s0;
+                solved = true;
+              }
+            if (!solved && same_matrix)
               {
                 clock.restart();
                 factorization->vmult(delta, rhs);
@@ -796,6 +848,11 @@ namespace porofrac
           const double res = relative_residual();
           time_residuals += clock.wall_time();
           residual_history.push_back(res);
+          {
+            const ResidualParts g = residual_parts(prm.c);
+            initial_relative_history.push_back(
+              g0_norm2 > 0 ? std::sqrt((g.mechanical + g.contact_unscaled) / g0_norm2) : 0.);
+          }
           progress << "    contact iteration " << iterations << ": relative residual "
                    << std::scientific << std::setprecision(3) << res << std::defaultfloat;
           if (alpha != 1)

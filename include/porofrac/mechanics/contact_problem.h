@@ -14,6 +14,7 @@
 
 #include <porofrac/geometry/cut_mesh.h>
 #include <porofrac/mechanics/contact_law.h>
+#include <porofrac/mechanics/multiplier_schur_complement.h>
 #include <porofrac/mechanics/parameters.h>
 
 #include <memory>
@@ -119,10 +120,18 @@ namespace porofrac
       /// linear elasticity solve on this mesh, in seconds (wall clock). Leaves u, lambda untouched.
       double
       time_linear_solve() const;
+      /// The same linear elasticity solve with the sparse Cholesky factorization of the
+      /// elasticity block that `Linear solver = schur complement` uses (factorization + solve).
+      double
+      time_linear_solve_cholesky() const;
 
       unsigned int iterations = 0;
       bool         converged  = false;
       std::vector<double> residual_history;
+      /// Diagnostic: |G(x_k)| / |G(x_0)| with G of eq. (27) unscaled (mechanical rows in N,
+      /// C_n in Pa, C_tau in Pa^2), x_0 the initial guess: one reading of the paper's 'relative
+      /// residual' (not used for stopping).
+      std::vector<double> initial_relative_history;
       /// Step lengths taken (1 = full step), line-search backtracks, detected active-set cycles.
       std::vector<double> step_history;
       unsigned int        backtracks      = 0;
@@ -132,6 +141,9 @@ namespace porofrac
       /// Wall time (s) spent in solve() on: contact rows, factorization, triangular solves,
       /// residual / line-search evaluations.
       double time_contact_rows = 0, time_factorization = 0, time_solves = 0, time_residuals = 0;
+      /// Schur complement path (Linear solver = schur complement): Cholesky factorization of the
+      /// elasticity block and forming W = J K^{-1} B^T, once per setup() (0 when reused).
+      double time_cholesky = 0, time_form_W = 0;
 
       const DoFHandler<dim> &
       get_dof_handler() const
@@ -166,6 +178,8 @@ namespace porofrac
       struct ResidualParts
       {
         double contact = 0, lambda = 0, c_jump = 0, mechanical = 0, load = 0;
+        /// |sigma|-weighted squared norm of the unscaled (25)-(26) (C_tau in Pa^2).
+        double contact_unscaled = 0;
       };
       ResidualParts
       residual_parts(const double c) const;
@@ -202,6 +216,8 @@ namespace porofrac
       /// The last LU factorization of the contact Jacobian and the face rows it was built with.
       std::unique_ptr<SparseDirectUMFPACK> factorization;
       std::vector<Tensor<2, dim>>          factorized_AlR, factorized_AjR;
+      /// Schur complement on the multipliers (built at the first solve(), kept while K is).
+      std::unique_ptr<MultiplierSchurComplement<dim>> schur;
 
     public:
       /// LU factorizations computed so far (each solve() reuses the last one while no face row
@@ -211,12 +227,7 @@ namespace porofrac
       Vector<double>       lambda;      ///< dim per face
 
       /// B: for face f, entries (dof, component, +-int_sigma phi) so that int [u] = sum.
-      struct CouplingEntry
-      {
-        types::global_dof_index dof;
-        unsigned int            component;
-        double                  value;
-      };
+      using CouplingEntry = mechanics::CouplingEntry;
       std::vector<std::vector<CouplingEntry>> coupling;
       std::vector<double>                     friction_values;
       double                                  lambda_scale = 1;

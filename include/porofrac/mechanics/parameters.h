@@ -64,6 +64,9 @@ namespace porofrac
       /// Reuse of the LU factors: GMRES preconditioned by the last factorization, at most this
       /// many iterations before refactorizing (0: factorize every iteration).
       unsigned int reuse_iterations = 0;
+      /// Linear solves of the contact iterations: UMFPACK on the whole (u, lambda) system, or
+      /// the Schur complement on the multipliers with one Cholesky factorization of K.
+      bool schur_complement = false;
       /// Measure one linear elasticity solve (all fractures open) on the same mesh.
       bool time_linear_solve = false;
     };

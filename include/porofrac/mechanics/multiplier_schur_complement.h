@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_MECHANICS_MULTIPLIER_SCHUR_COMPLEMENT_H
+#define POROFRAC_MECHANICS_MULTIPLIER_SCHUR_COMPLEMENT_H
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <porofrac/mechanics/sparse_cholesky.h>
+
+#include <memory>
+#include <vector>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    using namespace dealii;
+
+    /// One term of the coupling int_sigma lambda . [v] (paper eq. (10)) of a fracture face:
+    /// displacement dof, its vector component and +-int_sigma phi_dof.
+    struct CouplingEntry
+    {
+      types::global_dof_index dof;
+      unsigned int            component;
+      double                  value;
+    };
+
+    /**
+     * Linear solves of the contact iterations through the Schur complement on the multipliers.
+     * The Jacobian of (27) with the face rows of Section 5.1 / specs.md 3a reads
+     *
+     *   [ K       B^T ] [du]   [r_u]        K: constrained elasticity (constant),
+     *   [ A_j J   A_l ] [dl] = [r_l],       B^T: coupling, B^T = J^T M (M = face measures),
+     *
+     * with J the face-mean jump operator [u]_sigma of eq. (10) and A_l, A_j the dim x dim face
+     * rows (global frame). K is factorized once (Cholesky) and W = J K^{-1} B^T (dim n_faces
+     * square, dense) is formed once by blocked back-substitutions. Each iteration then solves
+     * the small dense system (A_l - A_j W) dl = r_l - A_j J K^{-1} r_u (LU, reused while the face
+     * rows do not change) and recovers du = K^{-1} (r_u - B^T dl): two sparse triangular solve
+     * pairs per iteration, instead of a sparse LU of the whole system.
+     */
+    template <int dim>
+    class MultiplierSchurComplement
+    {
+    public:
+      /**
+       * Factorizes the leading n_u block of @p base_matrix and forms W. Coupling entries on
+       * constrained dofs (@p constrained) are left out, as in the full system.
+       */
+      MultiplierSchurComplement(const SparseMatrix<double>                    &base_matrix,
+                                const unsigned int                             n_u,
+                                const std::vector<std::vector<CouplingEntry>> &coupling,
+                                const std::vector<double>                     &face_measures,
+                                const std::vector<bool>                       &constrained);
+
+      /// Sets the face rows A_l R, A_j R; refactorizes the dense Schur complement only if they
+      /// changed. Returns true when the previous LU factors were reused.
+      bool
+      set_rows(const std::vector<Tensor<2, dim>> &AlR, const std::vector<Tensor<2, dim>> &AjR);
+
+      /// Solves the Jacobian system for @p rhs = (r_u, r_l) (r_u zero on constrained dofs).
+      void
+      solve(const Vector<double> &rhs, Vector<double> &solution) const;
+
+      /// Wall times (s): Cholesky factorization, forming W, dense LU factorizations so far, and
+      /// the sparse triangular solves of solve().
+      double time_cholesky = 0, time_form_W = 0, time_dense_lu = 0;
+      mutable double time_solves = 0;
+      unsigned int   n_dense_factorizations = 0;
+      /// Nonzeros of Y = L^{-1} P J^T (sum of the reaches of the fracture-face columns).
+      std::size_t reach_entries = 0;
+
+      const SparseCholesky &
+      cholesky() const
+      {
+        return K;
+      }
+
+    private:
+      /// (J x)_(f, c): face-mean jump of a displacement vector.
+      void
+      jump(const double *x, Vector<double> &j) const;
+      /// x += -B^T l on the unconstrained dofs.
+      void
+      subtract_coupling(const Vector<double> &l, double *x) const;
+
+      const unsigned int                       n_u, n_f;
+      std::vector<std::vector<CouplingEntry>>  entries; ///< unconstrained coupling entries
+      std::vector<double>                      measures;
+      SparseCholesky                           K;
+      FullMatrix<double>                       W; ///< J K^{-1} B^T
+      std::vector<Tensor<2, dim>>              rows_l, rows_j;
+      LAPACKFullMatrix<double>                 S; ///< LU factors of the equilibrated A_l - A_j W
+      std::vector<double>                      row_scale;
+      bool                                     factorized = false;
+    };
+  } // namespace mechanics
+} // namespace porofrac
+
+#endif

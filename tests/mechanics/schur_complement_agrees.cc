@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The two linear-solver paths of the contact iterations (Mechanics/Linear solver): UMFPACK on the
+// whole (u, lambda) Jacobian, and the Schur complement on the multipliers with one Cholesky
+// factorization of K (multiplier_schur_complement.h). They solve the same linear systems, so on
+// the six-fracture scene of Section 5.2.2 (coarse deck mesh) they must take the same number of
+// iterations, end in the same face states, and agree to solver tolerance on u and lambda; checked
+// for the active-set method (open guess) and the semi-smooth Newton method (stick guess, c = 1e11),
+// and again for a warm-started second solve after a load change (set_equivalent_pressures), which
+// reuses the factorization and W.
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <porofrac/geometry/mesh_generator.h>
+#include <porofrac/geometry/parameters.h>
+#include <porofrac/mechanics/contact_problem.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+using namespace porofrac;
+using namespace dealii;
+
+int
+main()
+{
+  geometry::GeometryParameters g;
+  g.domain    = "box";
+  g.box       = "(0, 0) (2, 1)";
+  g.fractures = "1: (0.2, 0.7) (0.5, 0.7) (0.8, 0.65); 2: (1.0, 0.3) (1.8, 0.4); "
+                "3: (0.2, 0.3) (0.6, 0.25); 4: (1.0, 0.4) (1.7, 0.85); "
+                "5: (1.5, 0.65) (2.0, 0.55); 6: (1.5, 0.05) (1.4, 0.25)";
+  g.mesh_size           = 0.1;
+  g.fracture_mesh_size  = 0.04;
+  g.transition_distance = 0.05;
+  g.global_refinements  = 0;
+  auto mesh             = geometry::make_cut_mesh<2>(g);
+  std::cout << "fracture faces: " << mesh->fracture_faces.size() << std::endl;
+
+  ConditionalOStream quiet(std::cout, false);
+  TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
+  for (const auto method : {mechanics::ContactMethod::active_set,
+                            mechanics::ContactMethod::semismooth_newton})
+    {
+      mechanics::ContactParameters c;
+      c.young_modulus = 4e9;
+      c.poisson_ratio = 0.2;
+      c.dirichlet[2]  = {{0, "0"}, {1, "0"}};
+      c.dirichlet[3]  = {{0, "0.005"}, {1, "-0.002"}};
+      c.friction_all  = "0.5*(1+10*exp(-d^2/0.005))";
+      c.method        = method;
+      c.stick_guess   = (method == mechanics::ContactMethod::semismooth_newton);
+      c.c             = (method == mechanics::ContactMethod::semismooth_newton ? 1e11 : 1e9);
+      mechanics::ContactProblem<2> full(*mesh, c, quiet, timer);
+      c.schur_complement = true;
+      mechanics::ContactProblem<2> schur(*mesh, c, quiet, timer);
+      full.setup();
+      schur.setup();
+      const std::vector<double> pm(mesh->triangulation.n_active_cells(), 1e6),
+        pf(mesh->fracture_faces.size(), 0.5e6);
+      for (const bool warm : {false, true})
+        {
+          if (warm)
+            for (auto *p : {&full, &schur})
+              p->set_equivalent_pressures(pm, pf, 0.8);
+          full.solve(warm);
+          schur.solve(warm);
+          unsigned int same_states = 0;
+          for (unsigned int f = 0; f < mesh->fracture_faces.size(); ++f)
+            same_states += (full.state(f) == schur.state(f));
+          Vector<double> du(full.u), dl(full.lambda);
+          du -= schur.u;
+          dl -= schur.lambda;
+          const double eu = du.linfty_norm() / full.u.linfty_norm();
+          const double el = dl.linfty_norm() / full.lambda.linfty_norm();
+          std::cout << (method == mechanics::ContactMethod::active_set ? "active set, open guess" :
+                                                                         "semismooth newton, stick guess")
+                    << (warm ? ", warm start after a load change" : "") << ": iterations "
+                    << full.iterations << " / " << schur.iterations << ", same face states on "
+                    << same_states << " faces, u and lambda agree to 1e-8: "
+                    << (eu < 1e-8 && el < 1e-8 ? "yes" : "no") << std::endl;
+        }
+    }
+}
