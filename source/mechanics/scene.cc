@@ -404,17 +404,20 @@ namespace porofrac
           const double ell = Utilities::string_to_double(prm.get(p, "Fracture half length"));
           const double E = cp.young_modulus, nu = cp.poisson_ratio;
           const double lambda_n = sigma * std::sin(psi) * std::sin(psi);
+          // Analytical slip at abscissa tau with friction F; specs.md Corrections 1: plane-strain
+          // prefactor 4(1 - nu^2)/E.
+          const auto analytical_slip = [&](const double F, const double tau) {
+            return 4 * (1 - nu * nu) / E * sigma * std::sin(psi) *
+                   (std::cos(psi) - F * std::sin(psi)) *
+                   std::sqrt(std::max(0., ell * ell - (ell - tau) * (ell - tau)));
+          };
           double       e_t = 0, n_t = 0, e_n = 0, n_n = 0, max_jn = 0;
           for (const auto &face : mesh.fracture_faces)
             {
               const double tau = face.abscissa; // from the first point of the fracture
               if (tau < 0.1 * ell || tau > 1.9 * ell)
                 continue;
-              const double F = problem.friction(face.index);
-              // specs.md Corrections 1: plane-strain prefactor 4(1 - nu^2)/E.
-              const double slip = 4 * (1 - nu * nu) / E * sigma * std::sin(psi) *
-                                  (std::cos(psi) - F * std::sin(psi)) *
-                                  std::sqrt(std::max(0., ell * ell - (ell - tau) * (ell - tau)));
+              const double slip = analytical_slip(problem.friction(face.index), tau);
               const Tensor<2, dim> R = problem.frame(face.index);
               const Tensor<1, dim> j = R * problem.jump(face.index);
               const Tensor<1, dim> l = R * problem.multiplier(face.index);
@@ -438,10 +441,7 @@ namespace porofrac
               const double tau = v.abscissa;
               if (tau < 0.1 * ell || tau > 1.9 * ell)
                 continue;
-              const double F    = problem.friction(v.face);
-              const double slip = 4 * (1 - nu * nu) / E * sigma * std::sin(psi) *
-                                  (std::cos(psi) - F * std::sin(psi)) *
-                                  std::sqrt(std::max(0., ell * ell - (ell - tau) * (ell - tau)));
+              const double slip = analytical_slip(problem.friction(v.face), tau);
               const Tensor<2, dim> R = problem.frame(v.face);
               const Tensor<1, dim> j = R * v.jump, l = R * v.lambda;
               p_et += v.JxW * std::pow(LocalContactLaw<dim>::tangential(j).norm() - slip, 2);
