@@ -78,8 +78,8 @@ namespace porofrac
         Vector<double>      pw(n), pnw(n), snw(n), pE(n), phi(n);
         for (unsigned int K = 0; K < n; ++K)
           {
-            pw[K]  = solver.state[K][0];
-            pnw[K] = solver.state[K][1];
+            pw[K]  = solver.pressure(solver.state, K, 0);
+            pnw[K] = solver.pressure(solver.state, K, 1);
             snw[K] = solver.saturation(solver.state, K, flow::matrix_rock);
             pE[K]  = pm.equivalent_pressure()[K];
             phi[K] = grid.porosity[K];
@@ -96,8 +96,8 @@ namespace porofrac
             const Tensor<2, dim> R = pm.mechanics.frame(f);
             const Tensor<1, dim> j = R * pm.mechanics.jump(f);
             const Tensor<1, dim> l = R * pm.mechanics.multiplier(f);
-            fields[0].second.push_back(solver.state[i][0]);
-            fields[1].second.push_back(solver.state[i][1]);
+            fields[0].second.push_back(solver.pressure(solver.state, i, 0));
+            fields[1].second.push_back(solver.pressure(solver.state, i, 1));
             fields[2].second.push_back(solver.saturation(solver.state, i, flow::fracture_rock));
             fields[3].second.push_back(pm.equivalent_pressure()[i]);
             fields[4].second.push_back(grid.aperture[f]);
@@ -159,7 +159,7 @@ namespace porofrac
             const double z  = y_max - grid.nodes[K].centre[1];
             const double pe = exact.pressure(z, t);
             const double w  = grid.nodes[K].measure;
-            e2 += w * std::pow(solver.state[K][0] - pe, 2);
+            e2 += w * std::pow(solver.pressure(solver.state, K, 0) - pe, 2);
             n2 += w * std::pow(pe - exact.drained_pressure, 2);
           }
         const double error = std::sqrt(e2 / n2);

@@ -79,6 +79,8 @@ namespace porofrac
         Utilities::string_to_int(prm.get(flow, "Entry slope iterations"));
       check_input(newton.saturation_chop < 1, "Flow/Saturation chop", "must be below 1");
       newton.entry_slope        = prm.get(flow, "Entry slope in Jacobian") == "true";
+      newton.capillary_bound    = prm.get(flow, "Capillary pressure bound") == "true";
+      newton.line_search        = prm.get(flow, "Line search") == "true";
       if (adjust_newton)
         adjust_newton(newton);
 
@@ -113,16 +115,20 @@ namespace porofrac
       TwoPhaseSolver<dim> &solver = *model.solver;
       solver.matrix_dirichlet     = matrix_bc;
       solver.fracture_dirichlet   = fracture_bc;
+      solver.reference_pressure   = get_double(prm, flow, "Reference pressure");
       const std::array<double, 2> p_m = {{get_double(prm, {"Flow", "Matrix"}, "Initial pressure w"),
                                           get_double(prm, {"Flow", "Matrix"}, "Initial pressure nw")}};
       const std::array<double, 2> p_f = {
         {get_double(prm, {"Flow", "Fracture"}, "Initial pressure w"),
          get_double(prm, {"Flow", "Fracture"}, "Initial pressure nw")}};
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-        solver.state[i] = (grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::matrix ||
+        {
+          const auto &p = (grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::matrix ||
                            grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface) ?
                             p_m :
                             p_f;
+          solver.state[i] = {{p[0] - solver.reference_pressure, p[1] - solver.reference_pressure}};
+        }
       solver.apply_dirichlet(solver.state);
       solver.begin_time_step();
 

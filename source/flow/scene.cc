@@ -49,6 +49,9 @@ namespace porofrac
         prm.declare_entry("Mobility floor", "0", Patterns::Double(),
                           "Added to k_r in the mobilities so that an absent phase keeps a "
                           "well-posed pressure (-); 0 = exact laws.");
+        prm.declare_entry("Mobility floor nw", "-1", Patterns::Double(),
+                          "Floor of the non-wetting phase alone (-); negative: Mobility floor. "
+                          "With Capillary pressure bound the non-wetting floor should be 0.");
         prm.declare_entry("Initial pressure w", p0, Patterns::Double(),
                           "Initial wetting pressure (Pa).");
         prm.declare_entry("Initial pressure nw", p0, Patterns::Double(),
@@ -102,6 +105,20 @@ namespace porofrac
                         "Newton: largest change of a node's non-wetting saturation per "
                         "iteration (Appleyard chop; 0: no limit). Interface nodes are limited "
                         "under both the matrix and the fracture law.");
+      prm.declare_entry("Reference pressure", "0", Patterns::Double(),
+                        "Pressures are stored relative to this value (Pa); the results do not "
+                        "depend on it. Set it to the pressure of the best-conducting region (the "
+                        "fractures' boundary pressure): one ulp of a stored 1e5 Pa there can "
+                        "exceed the mass balance tolerance (doc/benchmarks/flow.md).");
+      prm.declare_entry("Line search", "false", Patterns::Bool(),
+                        "Newton: halve the update (up to 4 times) while it increases the "
+                        "residual norm (breaks the two-cycles of van Genuchten-Mualem k_r^w, "
+                        "whose slope is unbounded at S^nw = 0).");
+      prm.declare_entry("Capillary pressure bound", "false", Patterns::Bool(),
+                        "Newton: keep p_c >= 0 at every node (the non-wetting pressure of a "
+                        "saturated node is projected onto the wetting one; the Jacobian uses "
+                        "S'(0+) there). The saturation laws vanish for p_c <= 0, so this removes "
+                        "a pressure that no equation fixes; use it with Mobility floor nw = 0.");
       prm.declare_entry("Entry slope in Jacobian", "true", Patterns::Bool(),
                         "Newton: use S'(0+) instead of 0 in the Jacobian where p_c <= 0 (false: "
                         "exact Jacobian).");
@@ -163,7 +180,8 @@ namespace porofrac
           get_double(prm, path, "S_gr"), prefix);
       rock.viscosity[0]   = mu_w;
       rock.viscosity[1]   = mu_nw;
-      rock.mobility_floor = get_double(prm, path, "Mobility floor");
+      rock.mobility_floor    = get_double(prm, path, "Mobility floor");
+      rock.mobility_floor_nw = get_double(prm, path, "Mobility floor nw");
       rock.validate("Flow");
       return rock;
     }
@@ -251,8 +269,8 @@ namespace porofrac
         Vector<double> pw(n), pnw(n), pc(n), snw(n);
         for (unsigned int i = 0; i < n; ++i)
           {
-            pw[i]  = solver.state[i][0];
-            pnw[i] = solver.state[i][1];
+            pw[i]  = solver.pressure(solver.state, i, 0);
+            pnw[i] = solver.pressure(solver.state, i, 1);
             pc[i]  = pnw[i] - pw[i];
             snw[i] = solver.saturation(solver.state, i, matrix_rock);
           }
@@ -264,8 +282,8 @@ namespace porofrac
         for (unsigned int s = 0; s < grid.n_fracture_cells; ++s)
           {
             const unsigned int i = n + s;
-            fields[0].second.push_back(solver.state[i][0]);
-            fields[1].second.push_back(solver.state[i][1]);
+            fields[0].second.push_back(solver.pressure(solver.state, i, 0));
+            fields[1].second.push_back(solver.pressure(solver.state, i, 1));
             fields[2].second.push_back(solver.state[i][1] - solver.state[i][0]);
             fields[3].second.push_back(solver.saturation(solver.state, i, fracture_rock));
             fields[4].second.push_back(grid.aperture[s]);

@@ -97,7 +97,7 @@ namespace porofrac
       // p^E = p^w (1 - S) + p^nw S - U(p_c) = p^w + p_c S - U(p_c) (paper eq. (6)).
       const SaturationLaw &law = rocks[grid.nodes[node].rock].saturation;
       const double         pc  = s[node][1] - s[node][0];
-      return s[node][0] + pc * law.saturation(pc) - (capillary_energy_ ? law.energy(pc) : 0.);
+      return s[node][0] + reference_pressure + pc * law.saturation(pc) - (capillary_energy_ ? law.energy(pc) : 0.);
     }
 
     template <int dim>
@@ -160,9 +160,9 @@ namespace porofrac
               if (!da && !db)
                 e.dissipation += dt * F * (s[c.a][phase] - s[c.b][phase]);
               else if (db)
-                e.boundary_work -= dt * F * s[c.b][phase];
+                e.boundary_work -= dt * F * (s[c.b][phase] + reference_pressure);
               else // Dirichlet node a: the flux into it from b is -F.
-                e.boundary_work += dt * F * s[c.a][phase];
+                e.boundary_work += dt * F * (s[c.a][phase] + reference_pressure);
             }
         }
       // Sources supply dt |K| h^alpha p^alpha.
@@ -170,7 +170,7 @@ namespace porofrac
         for (unsigned int i = 0; i < grid.n_nodes(); ++i)
           if (!grid.is_dirichlet(i))
             for (unsigned int phase = 0; phase < 2; ++phase)
-              e.boundary_work += dt * source[i][phase] * s[i][phase];
+              e.boundary_work += dt * source[i][phase] * (s[i][phase] + reference_pressure);
       return e;
     }
 
@@ -186,7 +186,7 @@ namespace porofrac
                                                                                 fracture_dirichlet;
             const auto it = table.find(grid.nodes[i].boundary_id);
             Assert(it != table.end(), ExcInternalError());
-            s[i] = it->second;
+            s[i] = {{it->second[0] - reference_pressure, it->second[1] - reference_pressure}};
           }
     }
 
@@ -230,10 +230,16 @@ namespace porofrac
           const double PV = pore_volume(s, i, dPV), PV_old = old_pore_volume[i];
           if (PV == 0 && PV_old == 0)
             {
-              // Massless node: with the entry slope active and p_c <= 0, a Jacobian-only
-              // virtual pore volume keeps the rows of an absent phase non-singular.
+              // Massless node where the non-wetting phase is absent (p_c <= 0 with the entry
+              // slope active; S < 1e-6 with the capillary bound, where the phase's mobilities
+              // can all vanish): a Jacobian-only virtual pore volume keeps its rows
+              // non-singular. Above 1e-6 the Jacobian stays exact (quadratic convergence).
               const double pc = s[i][1] - s[i][0];
-              if (!(J && parameters.entry_slope && entry_slope_active && pc <= 0))
+              const bool   absent =
+                parameters.capillary_bound ?
+                  rocks[grid.nodes[i].rock].saturation.saturation(pc) < 1e-6 :
+                  pc <= 0 && parameters.entry_slope && entry_slope_active;
+              if (!(J && absent))
                 continue;
               const double dS  = slope(rocks[grid.nodes[i].rock], pc);
               const double PVv = 1e-3 * mean_pore_volume;
@@ -310,7 +316,7 @@ namespace porofrac
     {
       // With entry_slope, the Jacobian uses the entry slope S'(0+) where p_c <= 0 (an inexact
       // Newton that lets an absent phase enter); the residual is unchanged.
-      if (parameters.entry_slope && entry_slope_active && pc <= 0)
+      if (pc <= 0 && (parameters.capillary_bound || (parameters.entry_slope && entry_slope_active)))
         return rock.saturation.derivative(1e-12 * pressure_scale(
                  &rock == &rocks[0] ? matrix_rock : fracture_rock));
       return rock.saturation.derivative(pc);
@@ -404,6 +410,10 @@ namespace porofrac
       double         best_residual = std::numeric_limits<double>::infinity(), best_mass = best_residual;
       unsigned int   last_progress = 0;
       apply_dirichlet(state);
+      if (parameters.capillary_bound)
+        for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+          if (!grid.is_dirichlet(i))
+            state[i][1] = std::max(state[i][1], state[i][0]);
       for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
         {
           // A non-finite state (initial guess or diverged update) is a failed step.
@@ -433,6 +443,26 @@ namespace porofrac
           result.mass_defect = mass_defect(state, old_state, dt);
           const bool mass_ok = result.mass_defect[0] < parameters.mass_tolerance &&
                                result.mass_defect[1] < parameters.mass_tolerance;
+          // Where the residual is largest: which node and phase hold Newton back.
+          if (verbose.is_active())
+            {
+              unsigned int imax = 0, ph = 0;
+              double       rmax = 0;
+              for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+                for (unsigned int a = 0; a < 2; ++a)
+                  if (dof(i, a) != numbers::invalid_unsigned_int &&
+                      std::abs(residual(dof(i, a))) > rmax)
+                    {
+                      rmax = std::abs(residual(dof(i, a)));
+                      imax = i;
+                      ph   = a;
+                    }
+              verbose << "        largest residual " << residual(dof(imax, ph)) << " (phase " << ph
+                      << ") at node " << imax << " (kind " << static_cast<int>(grid.nodes[imax].kind)
+                      << ", p_w = " << pressure(state, imax, 0)
+                      << ", p_c = " << state[imax][1] - state[imax][0] << ", old p_c = "
+                      << old_state[imax][1] - old_state[imax][0] << ")" << std::endl;
+            }
           verbose << "      Newton " << it << ": |R| = " << std::scientific << std::setprecision(3)
                   << r << ", update " << last_update << ", mass defect "
                   << std::max(result.mass_defect[0], result.mass_defect[1]) << std::defaultfloat
@@ -494,6 +524,7 @@ namespace porofrac
                 }
               }
           }
+          const State previous = parameters.line_search ? state : State();
           // Appleyard-type chop: the capillary pressure of a node changes by at most
           // capillary_chop times the pressure scale of its saturation law per iteration.
           double       p_max = 0, du_max = 0;
@@ -513,12 +544,16 @@ namespace porofrac
                 if (lim > 0 && std::abs(dpc) > lim)
                   dpc = dpc > 0 ? lim : -lim;
                 // Stop at the kink of S at p_c = 0 when leaving the two-phase region.
-                if (parameters.kink_stop && pc_old > 0 && pc_old + dpc < 0)
+                if ((parameters.kink_stop || parameters.capillary_bound) && pc_old > 0 &&
+                    pc_old + dpc < 0)
                   dpc = -pc_old;
                 // Entering: the entry-slope linearization is about p_c = 0, so a node with
                 // p_c < 0 that the Newton step pushes up starts from the kink.
                 if (parameters.entry_slope && pc_old < 0 && dpc > 0)
                   dpc -= pc_old;
+                // Bound: p_c >= 0 (the non-wetting pressure of a saturated node is the wetting one).
+                if (parameters.capillary_bound && pc_old + dpc < 0)
+                  dpc = -pc_old;
                 // Saturation chop: |Delta S| <= saturation_chop under the node's law (both laws
                 // at interface nodes, whose matrix-side mobility uses the matrix law).
                 if (parameters.saturation_chop > 0)
@@ -538,7 +573,7 @@ namespace porofrac
                 state[i][0] += dpw;
                 state[i][1] += dpw + dpc;
                 for (unsigned int phase = 0; phase < 2; ++phase)
-                  p_max = std::max(p_max, std::abs(state[i][phase]));
+                  p_max = std::max(p_max, std::abs(state[i][phase] + reference_pressure));
                 const double du = std::max(std::abs(dpw), std::abs(dpw + dpc));
                 if (du > du_max)
                   {
@@ -565,6 +600,35 @@ namespace porofrac
             {
               result.failure = "non-finite update";
               return result;
+            }
+          // Backtracking: halve the (chopped) update while it increases |R|. This breaks the
+          // two-cycles that the unbounded slope of the van Genuchten-Mualem k_r^w at S^nw = 0
+          // causes at drying fronts; the projections above commute with the damping (p_c >= 0
+          // and |Delta S| bounds hold on the segment).
+          if (parameters.line_search)
+            {
+              std::unique_ptr<TimerOutput::Scope> t;
+              if (timer)
+                t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: assembly");
+              const State full  = state;
+              double      theta = 1.;
+              Vector<double> trial;
+              for (unsigned int k = 0; k < parameters.line_search_steps; ++k)
+                {
+                  assemble(state, old_state, dt, trial, nullptr);
+                  if (trial.l2_norm() <= r)
+                    break;
+                  theta *= 0.5;
+                  for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+                    for (unsigned int phase = 0; phase < 2; ++phase)
+                      state[i][phase] =
+                        previous[i][phase] + theta * (full[i][phase] - previous[i][phase]);
+                }
+              if (theta < 1.)
+                {
+                  last_update *= theta;
+                  verbose << "        line search: step " << theta << std::endl;
+                }
             }
           result.iterations = it + 1;
         }

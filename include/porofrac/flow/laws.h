@@ -100,12 +100,15 @@ namespace porofrac
       /// Added to k_r inside the mobility to keep the phase-pressure system non-singular where a
       /// phase is absent (specs.md 3b, item 3); 0 gives the exact law.
       double mobility_floor = 0.;
+      /// The floor of the non-wetting phase (negative: mobility_floor).
+      double mobility_floor_nw = -1.;
 
       /// Mobility eta^alpha = (k_r^alpha(s^nw) + floor) / mu^alpha and d eta/d s^nw.
       double
       mobility(const unsigned int phase, const double s_nw) const
       {
-        return (relative_permeability.value(phase, s_nw) + mobility_floor) / viscosity[phase];
+        const double floor = phase == 1 && mobility_floor_nw >= 0 ? mobility_floor_nw : mobility_floor;
+        return (relative_permeability.value(phase, s_nw) + floor) / viscosity[phase];
       }
       double
       mobility_derivative(const unsigned int phase, const double s_nw) const

@@ -54,6 +54,14 @@ namespace porofrac
       double stagnation_mass_tolerance = 0.;
       /// Newton: a node leaving the two-phase region (p_c > 0 to p_c < 0) stops at p_c = 0 first.
       bool kink_stop = true;
+      /// Keep p_c >= 0 at every node (projection after each update; the Jacobian uses S'(0+) at
+      /// the bound). With zero-entry-pressure laws S = 0 for p_c <= 0, so with no non-wetting
+      /// mobility floor the bound does not change the solution: it removes the non-wetting
+      /// pressure of a saturated node, which no equation determines, from the Newton iteration.
+      bool capillary_bound = false;
+      /// Backtracking: halve the update (at most line_search_steps times) while |R| grows.
+      bool         line_search       = false;
+      unsigned int line_search_steps = 4;
     };
 
     /// Energy exchanged by the flow over one time step (coupled energy estimate, paper Section 4.2).
@@ -204,8 +212,22 @@ namespace porofrac
       StepResult
       solve_time_step(const double dt, ConditionalOStream &verbose);
 
+      /// Phase pressures (w, nw) of every node, relative to reference_pressure.
       State state;
       State old_state;
+      /// Gauge of the stored pressures: state holds p - reference_pressure. Fluxes see only
+      /// differences, but a node's pressure can move by no less than one ulp of its stored
+      /// value; where the fractures conduct so well that one ulp of ~1e5 Pa moves more than the
+      /// mass tolerance, storing deviations from the fractures' pressure keeps Newton's
+      /// roundoff floor below it. p_E, the energy terms and outputs add it back.
+      double reference_pressure = 0.;
+
+      /// Absolute pressure of @p phase at node @p i of @p s.
+      double
+      pressure(const State &s, const unsigned int i, const unsigned int phase) const
+      {
+        return s[i][phase] + reference_pressure;
+      }
       /// Volumetric source of each phase per node (m^3/s, already integrated over the node's
       /// weighted measure: |K| h^alpha_K of scheme (11a)); empty = no sources.
       std::vector<std::array<double, 2>> source;
