@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -17,9 +18,13 @@ namespace porofrac
     FixedPointParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Coupling");
-      prm.declare_entry("Method", "newton-krylov", Patterns::Selection("newton-krylov|fixed point"),
+      prm.declare_entry("Method", "newton-krylov", Patterns::Selection("newton-krylov|anderson|fixed point"),
                         "How each time step's fixed point is solved: Jacobian-free Newton-Krylov "
-                        "acceleration (paper, Section 5) or plain fixed-point iterations.");
+                        "acceleration (paper, Section 5), Anderson acceleration (one map "
+                        "evaluation per iteration), or plain fixed-point iterations.");
+      prm.declare_entry("Anderson depth", "5", Patterns::Integer(1),
+                        "Anderson: number of previous residual differences in the least-squares "
+                        "mixing.");
       prm.declare_entry("Tolerance", "1e-6", Patterns::Double(0),
                         "Stop at this relative increment or relative residual (paper: 1e-6).");
       prm.declare_entry("Max iterations", "30", Patterns::Integer(1),
@@ -45,6 +50,7 @@ namespace porofrac
       gmres_restart        = prm.get_integer("GMRES restart");
       max_gmres_iterations = prm.get_integer("Max GMRES iterations");
       eta_max              = prm.get_double("Forcing term max");
+      anderson_depth       = prm.get_integer("Anderson depth");
       prm.leave_subsection();
       check_input(tolerance > 0, "Coupling/Tolerance", "must be positive");
     }
@@ -60,7 +66,87 @@ namespace porofrac
     FixedPointResult
     FixedPointSolver::solve(const Map &g, Vector<double> &x) const
     {
-      return parameters.method == "fixed point" ? solve_plain(g, x) : solve_newton_krylov(g, x);
+      if (parameters.method == "fixed point")
+        return solve_plain(g, x);
+      if (parameters.method == "anderson")
+        return solve_anderson(g, x);
+      return solve_newton_krylov(g, x);
+    }
+
+
+
+    FixedPointResult
+    FixedPointSolver::solve_anderson(const Map &g, Vector<double> &x) const
+    {
+      // Anderson acceleration (Walker and Ni 2011, type II, no damping): with f_k = g(x_k) - x_k
+      // and the differences dF, dG of the last m residuals and images,
+      // gamma = argmin |f_k - dF gamma|, x_{k+1} = g(x_k) - dG gamma. Same stopping rules and
+      // final state as the plain iteration (x = g(x_k) once |f_k| is small).
+      FixedPointResult            result;
+      const unsigned int          n = x.size();
+      Vector<double>              gx(n), f(n), f_prev(n), g_prev(n);
+      std::vector<Vector<double>> dF, dG;
+      double                      r0 = 0;
+      for (result.iterations = 1; result.iterations <= parameters.max_iterations;
+           ++result.iterations)
+        {
+          g(x, gx);
+          ++result.map_evaluations;
+          f = gx;
+          f -= x;
+          const double r = f.l2_norm();
+          if (result.iterations == 1)
+            r0 = r;
+          result.residual_history.push_back(r);
+          result.relative_residual  = r0 > 0 ? r / r0 : 0.;
+          result.relative_increment = r / std::max(x.l2_norm(), std::numeric_limits<double>::min());
+          if (r == 0 || result.relative_increment <= parameters.tolerance ||
+              (result.iterations > 1 && result.relative_residual <= parameters.tolerance))
+            {
+              x                            = gx;
+              result.converged             = true;
+              result.evaluated_at_solution = true;
+              return result;
+            }
+          if (result.iterations > 1)
+            {
+              dF.emplace_back(f);
+              dF.back() -= f_prev;
+              dG.emplace_back(gx);
+              dG.back() -= g_prev;
+              if (dF.size() > parameters.anderson_depth)
+                {
+                  dF.erase(dF.begin());
+                  dG.erase(dG.begin());
+                }
+            }
+          f_prev = f;
+          g_prev = gx;
+          x      = gx;
+          const unsigned int m = dF.size();
+          if (m == 0)
+            continue;
+          // Normal equations of the small least-squares problem, with a relative Tikhonov
+          // shift that keeps them solvable when the differences become dependent.
+          FullMatrix<double> M(m, m);
+          Vector<double>     b(m), gamma(m);
+          double             trace = 0;
+          for (unsigned int i = 0; i < m; ++i)
+            {
+              b(i) = dF[i] * f;
+              for (unsigned int j = 0; j < m; ++j)
+                M(i, j) = dF[i] * dF[j];
+              trace += M(i, i);
+            }
+          for (unsigned int i = 0; i < m; ++i)
+            M(i, i) += 1e-10 * trace / m;
+          M.gauss_jordan();
+          M.vmult(gamma, b);
+          for (unsigned int i = 0; i < m; ++i)
+            x.add(-gamma(i), dG[i]);
+        }
+      result.iterations = parameters.max_iterations;
+      return result;
     }
 
 

@@ -584,6 +584,31 @@ namespace porofrac
 
     template <int dim>
     void
+    ContactProblem<dim>::apply_linearization(const std::vector<Tensor<2, dim>> &AlR,
+                                             const std::vector<Tensor<2, dim>> &AjR,
+                                             const Vector<double> &x, Vector<double> &y) const
+    {
+      // Rows [0, n_u): K x_u + B^T x_lambda (base_matrix, constrained rows as in the full
+      // system); face rows: A_l R x_lambda + A_j R [x_u] (as assembled in solve()).
+      const unsigned int n_u = dof_handler.n_dofs();
+      base_matrix.vmult(y, x);
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        {
+          const double   m = face_measures[fi];
+          Tensor<1, dim> l, j;
+          for (unsigned int k = 0; k < dim; ++k)
+            l[k] = x(n_u + dim * fi + k);
+          for (const auto &e : coupling[fi])
+            if (!constraints_hom.is_constrained(e.dof))
+              j[e.component] += e.value * x(e.dof) / m;
+          const Tensor<1, dim> row = AlR[fi] * l + AjR[fi] * j;
+          for (unsigned int i = 0; i < dim; ++i)
+            y(n_u + dim * fi + i) = row[i];
+        }
+    }
+
+    template <int dim>
+    void
     ContactProblem<dim>::solve(const bool warm_start)
     {
       const unsigned int n_u = dof_handler.n_dofs();
@@ -718,6 +743,20 @@ namespace porofrac
                 if (!schur->set_rows(AlR, AjR))
                   ++factorizations;
                 schur->solve(rhs, delta);
+                // Iterative refinement on the full system: the dense multiplier system is
+                // worse conditioned than the full one (stick rows against W ~ h/E), and a
+                // solve error of ~1e-7 stalls warm-started coupled solves and spoils the
+                // finite-difference products of Newton-Krylov.
+                Vector<double> defect(N), correction(N);
+                for (unsigned int k = 0; k < 3; ++k)
+                  {
+                    apply_linearization(AlR, AjR, delta, defect);
+                    defect.sadd(-1., 1., rhs);
+                    if (defect.l2_norm() <= 1e-14 * rhs.l2_norm())
+                      break;
+                    schur->solve(defect, correction);
+                    delta += correction;
+                  }
                 time_factorization += schur->time_dense_lu - lu0;
                 time_solves += schur->time_solves - s0;
                 solved = true;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The coupled Newton-Krylov and the plain fixed-point iterations (and the fixed point on u) solve
+// The coupled Newton-Krylov, Anderson and plain fixed-point iterations (and the fixed point on u) solve
 // the same discrete problem: on the fractured drainage scene with contact (energy_drainage.prm,
 // 15 steps), the final normal jumps and multipliers of every fracture face agree to a fraction
 // of the coupling tolerance. Printed: the largest difference of [u]_n relative to max |[u]_n|
@@ -97,6 +97,8 @@ main()
   const auto nk_p    = run("newton-krylov", "equivalent pressure");
   const auto plain_p = run("fixed point", "equivalent pressure");
   const auto nk_u    = run("newton-krylov", "displacement");
+  const auto and_p   = run("anderson", "equivalent pressure");
   compare("Newton-Krylov vs plain, p_E", nk_p, plain_p);
   compare("Newton-Krylov on p_E vs on u", nk_p, nk_u);
+  compare("Newton-Krylov vs Anderson, p_E", nk_p, and_p);
 }

@@ -29,6 +29,8 @@ namespace porofrac
       /// Eisenstat-Walker forcing terms (choice 2): eta_k = gamma (|R_k| / |R_{k-1}|)^alpha,
       /// capped by eta_max.
       double eta_max  = 0.1;
+      /// Anderson acceleration: number of stored differences.
+      unsigned int anderson_depth = 5;
       double ew_gamma = 0.9;
       double ew_alpha = 2.0;
 
@@ -81,6 +83,8 @@ namespace porofrac
       solve_plain(const Map &g, Vector<double> &x) const;
       FixedPointResult
       solve_newton_krylov(const Map &g, Vector<double> &x) const;
+      FixedPointResult
+      solve_anderson(const Map &g, Vector<double> &x) const;
 
       const FixedPointParameters parameters;
     };

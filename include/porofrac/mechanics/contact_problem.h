@@ -217,6 +217,11 @@ namespace porofrac
       std::unique_ptr<SparseDirectUMFPACK> factorization;
       std::vector<Tensor<2, dim>>          factorized_AlR, factorized_AjR;
       /// Schur complement on the multipliers (built at the first solve(), kept while K is).
+      /// y = J x for the linearization of solve() with face rows AlR, AjR (Schur refinement).
+      void
+      apply_linearization(const std::vector<Tensor<2, dim>> &AlR,
+                          const std::vector<Tensor<2, dim>> &AjR, const Vector<double> &x,
+                          Vector<double> &y) const;
       std::unique_ptr<MultiplierSchurComplement<dim>> schur;
 
     public:
