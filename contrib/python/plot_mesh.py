@@ -14,10 +14,15 @@ from matplotlib.collections import LineCollection  # noqa: E402
 
 
 def read_legacy_vtk(path):
-    """Returns points, cells and cell scalars of an ASCII legacy VTK unstructured grid."""
+    """Returns points, cells and cell scalars of an ASCII legacy VTK unstructured grid.
+
+    POINT_DATA scalars (DataOut writes each simplex as its own patch, so a cell's points carry
+    its values) are averaged over the points of each cell.
+    """
     with open(path) as f:
         tokens = f.read().split()
     points, cells, data = [], [], {}
+    location, count = "CELL_DATA", 0
     i = 0
     while i < len(tokens):
         t = tokens[i]
@@ -33,6 +38,9 @@ def read_legacy_vtk(path):
                 m = int(tokens[i])
                 cells.append(list(map(int, tokens[i + 1:i + 1 + m])))
                 i += 1 + m
+        elif t in ("CELL_DATA", "POINT_DATA"):
+            location, count = t, int(tokens[i + 1])
+            i += 2
         elif t == "SCALARS":
             name = tokens[i + 1]
             i += 3
@@ -40,10 +48,11 @@ def read_legacy_vtk(path):
                 i += 1
             if tokens[i] == "LOOKUP_TABLE":
                 i += 2
-            values = []
-            while i < len(tokens) and len(values) < len(cells):
-                values.append(float(tokens[i]))
-                i += 1
+            n = count if count > 0 else len(cells)
+            values = list(map(float, tokens[i:i + n]))
+            i += n
+            if location == "POINT_DATA":
+                values = [sum(values[p] for p in c) / len(c) for c in cells]
             data[name] = values
         else:
             i += 1
