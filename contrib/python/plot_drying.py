@@ -1,14 +1,19 @@
 #!/usr/bin/python3
 """Reproduces the paper's Figs. 14-18 (Section 5.3) from PoroFrac runs of prm/drying_cylinder.prm
-written with `--set Output/Format=vtk`.
+written with `Output/Format = vtk`.
 
-Usage: plot_drying.py AS_DIR SSN_DIR AS_U_DIR PICTURE_DIR
-  AS_DIR    active set + Newton-Krylov on p_E (the deck's defaults)
-  SSN_DIR   semi-smooth Newton (c = 1e9) + Newton-Krylov on p_E
-  AS_U_DIR  active set + Newton-Krylov on u
+Usage: plot_drying.py --as AS_DIR --ssn SSN_DIR --as-u AS_U_DIR [--fields FIELDS_DIR]
+                      [--anderson ANDERSON_DIR] --out PICTURE_DIR
+  AS_DIR        active set + Newton-Krylov on p_E
+  SSN_DIR       semi-smooth Newton (c = 1e9) + Newton-Krylov on p_E
+  AS_U_DIR      active set + Newton-Krylov on u
+  FIELDS_DIR    the run whose fracture states, apertures and final fields are drawn (Figs. 14,
+                16, 17); default AS_DIR
+  ANDERSON_DIR  optional: active set + Anderson on p_E, added to Figs. 15 and 18
 Writes drying_fig14_states.png, drying_fig15_width.png, drying_fig16_aperture.png,
 drying_fig17_fields.png, drying_fig18_iterations.png into PICTURE_DIR.
 """
+import argparse
 import csv
 import os
 import re
@@ -83,10 +88,9 @@ def plot_fracture_field(directory, times, picture, field, title, states=False):
     plt.close(fig)
 
 
-def plot_width(as_dir, ssn_dir, picture):
+def plot_width(runs, picture):
     fig, ax = plt.subplots(figsize=(6.5, 4))
-    for directory, label, style in [(as_dir, "active set (c = 1e6)", "-"),
-                                    (ssn_dir, "semi-smooth Newton (c = 1e9)", "--")]:
+    for directory, label, style in runs:
         h = read_history(directory)
         ax.plot([float(r["time"]) / YEAR for r in h],
                 [float(r["mean_fracture_width"]) * 1e3 for r in h], style, label=label)
@@ -140,19 +144,31 @@ def plot_iterations(runs, picture):
 
 
 def main():
-    if len(sys.argv) != 5:
-        sys.exit(__doc__)
-    as_dir, ssn_dir, as_u_dir, out = sys.argv[1:]
-    times = [1 * YEAR, 50 * YEAR, 200 * YEAR]
-    plot_fracture_field(as_dir, times, os.path.join(out, "drying_fig14_states.png"), "state",
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--as", dest="as_dir", required=True)
+    parser.add_argument("--ssn", required=True)
+    parser.add_argument("--as-u", dest="as_u", required=True)
+    parser.add_argument("--fields")
+    parser.add_argument("--anderson")
+    parser.add_argument("--out", required=True)
+    a = parser.parse_args()
+    fields = a.fields or a.as_dir
+    times = [0., 1 * YEAR, 50 * YEAR, 200 * YEAR]
+    plot_fracture_field(fields, times, os.path.join(a.out, "drying_fig14_states.png"), "state",
                         "contact state", states=True)
-    plot_width(as_dir, ssn_dir, os.path.join(out, "drying_fig15_width.png"))
-    plot_fracture_field(as_dir, times, os.path.join(out, "drying_fig16_aperture.png"),
+    widths = [(a.as_dir, "active set (c = 1e6) + NK(p_E)", "-"),
+              (a.ssn, "semi-smooth Newton (c = 1e9) + NK(p_E)", "--")]
+    iterations = [(a.as_dir, "active set + NK(p_E)"), (a.ssn, "semi-smooth Newton + NK(p_E)"),
+                  (a.as_u, "active set + NK(u)")]
+    if a.anderson:
+        widths.append((a.anderson, "active set + Anderson(p_E)", ":"))
+        iterations.append((a.anderson, "active set + Anderson(p_E)"))
+    plot_width(widths, os.path.join(a.out, "drying_fig15_width.png"))
+    plot_fracture_field(fields, times, os.path.join(a.out, "drying_fig16_aperture.png"),
                         "aperture", "aperture")
-    plot_fields(as_dir, os.path.join(out, "drying_fig17_fields.png"))
-    plot_iterations([(as_dir, "active set + NK(p_E)"), (ssn_dir, "semi-smooth Newton + NK(p_E)"),
-                     (as_u_dir, "active set + NK(u)")],
-                    os.path.join(out, "drying_fig18_iterations.png"))
+    plot_fields(fields, os.path.join(a.out, "drying_fig17_fields.png"))
+    plot_iterations(iterations, os.path.join(a.out, "drying_fig18_iterations.png"))
 
 
 if __name__ == "__main__":
