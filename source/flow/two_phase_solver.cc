@@ -624,11 +624,10 @@ namespace porofrac
                       state[i][phase] =
                         previous[i][phase] + theta * (full[i][phase] - previous[i][phase]);
                 }
+              // last_update stays the undamped Newton update: a damped step is no sign of
+              // convergence.
               if (theta < 1.)
-                {
-                  last_update *= theta;
-                  verbose << "        line search: step " << theta << std::endl;
-                }
+                verbose << "        line search: step " << theta << std::endl;
             }
           result.iterations = it + 1;
         }
