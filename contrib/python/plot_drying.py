@@ -112,11 +112,12 @@ def plot_fields(directory, picture):
     for ax, (name, label) in zip(axes, [("s_nw", "gas saturation"),
                                         ("p_E", "equivalent pressure (Pa)"),
                                         ("porosity", "porosity")]):
-        pc = PolyCollection(triangles, array=data[name], cmap="viridis", edgecolors="none")
+        pc = PolyCollection(triangles, array=data[name], cmap="viridis", edgecolors="face",
+                            linewidths=0.3)
         ax.add_collection(pc)
         fig.colorbar(pc, ax=ax, label=label)
         ax.set_xlim(0, 10)
-        ax.set_ylim(5, 8)
+        ax.set_ylim(5, 7)
         ax.set_ylabel("r (m)")
     axes[0].set_title(f"t = {t / YEAR:.3g} years", fontsize=10)
     axes[-1].set_xlabel("x (m)")
