@@ -57,6 +57,27 @@ namespace porofrac
 
 
 
+    namespace
+    {
+      /// Records r = |g(x_k) - x_k| of iteration result.iterations (r0 at the first) and whether
+      /// the plain or Anderson iteration stops: relative increment r/|x_k| or relative residual
+      /// r/r0 below the tolerance.
+      bool
+      record_and_test(FixedPointResult &result, const double r, double &r0, const double x_norm,
+                      const double tolerance)
+      {
+        if (result.iterations == 1)
+          r0 = r;
+        result.residual_history.push_back(r);
+        result.relative_residual  = r0 > 0 ? r / r0 : 0.;
+        result.relative_increment = r / std::max(x_norm, std::numeric_limits<double>::min());
+        return r == 0 || result.relative_increment <= tolerance ||
+               (result.iterations > 1 && result.relative_residual <= tolerance);
+      }
+    } // namespace
+
+
+
     FixedPointSolver::FixedPointSolver(const FixedPointParameters &parameters)
       : parameters(parameters)
     {}
@@ -94,14 +115,7 @@ namespace porofrac
           ++result.map_evaluations;
           f = gx;
           f -= x;
-          const double r = f.l2_norm();
-          if (result.iterations == 1)
-            r0 = r;
-          result.residual_history.push_back(r);
-          result.relative_residual  = r0 > 0 ? r / r0 : 0.;
-          result.relative_increment = r / std::max(x.l2_norm(), std::numeric_limits<double>::min());
-          if (r == 0 || result.relative_increment <= parameters.tolerance ||
-              (result.iterations > 1 && result.relative_residual <= parameters.tolerance))
+          if (record_and_test(result, f.l2_norm(), r0, x.l2_norm(), parameters.tolerance))
             {
               x                            = gx;
               result.converged             = true;
@@ -163,15 +177,9 @@ namespace porofrac
           g(x, gx);
           ++result.map_evaluations;
           gx -= x; // now g(x) - x = -R(x) = the increment
-          const double r = gx.l2_norm();
-          if (result.iterations == 1)
-            r0 = r;
-          result.residual_history.push_back(r);
-          result.relative_residual  = r0 > 0 ? r / r0 : 0.;
-          result.relative_increment = r / std::max(x.l2_norm(), std::numeric_limits<double>::min());
+          const bool done = record_and_test(result, gx.l2_norm(), r0, x.l2_norm(), parameters.tolerance);
           x += gx;
-          if (r == 0 || result.relative_increment <= parameters.tolerance ||
-              (result.iterations > 1 && result.relative_residual <= parameters.tolerance))
+          if (done)
             {
               // The last evaluation was at x_prev, with g(x_prev) = x within the tolerance: the
               // states inside g are those of the accepted Picard iterate.
