@@ -387,6 +387,8 @@ namespace porofrac
       m["c"]                    = mechanics_parameters.c;
       m["nonlinear_iterations"] = total_mechanics;
       m["initial_state_iterations"] = initial_mechanics_iterations;
+      // LU factorizations of the contact system (reused while no face row changes).
+      m["lu_factorizations"]    = mech.n_factorizations;
       m["converged"]            = true;
       const auto c              = count_states(mech, -1);
       m["n_open"]               = c[0];
