@@ -518,10 +518,8 @@ namespace porofrac
               }
             catch (...)
               {
-                {
-                  result.failure = "singular Jacobian (UMFPACK failed)";
-                  return result;
-                }
+                result.failure = "singular Jacobian (UMFPACK failed)";
+                return result;
               }
           }
           const State previous = parameters.line_search ? state : State();
@@ -544,8 +542,7 @@ namespace porofrac
                 if (lim > 0 && std::abs(dpc) > lim)
                   dpc = dpc > 0 ? lim : -lim;
                 // Stop at the kink of S at p_c = 0 when leaving the two-phase region.
-                if ((parameters.kink_stop || parameters.capillary_bound) && pc_old > 0 &&
-                    pc_old + dpc < 0)
+                if (parameters.kink_stop && pc_old > 0 && pc_old + dpc < 0)
                   dpc = -pc_old;
                 // Entering: the entry-slope linearization is about p_c = 0, so a node with
                 // p_c < 0 that the Newton step pushes up starts from the kink.
