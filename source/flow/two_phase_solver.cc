@@ -3,7 +3,7 @@
 #include <deal.II/lac/sparse_direct.h>
 
 #include <porofrac/base/exceptions.h>
-#include <porofrac/flow/sparse_lu.h>
+#include <porofrac/base/sparse_lu.h>
 #include <porofrac/flow/two_phase_solver.h>
 
 #include <cmath>
@@ -400,6 +400,18 @@ namespace porofrac
     }
 
     template <int dim>
+    bool
+    TwoPhaseSolver<dim>::stagnation_fallback_holds(const double mass_defect,
+                                                   const double update) const
+    {
+      const double mass_bound = parameters.stagnation_mass_tolerance > 0 ?
+                                  parameters.stagnation_mass_tolerance :
+                                  parameters.mass_tolerance;
+      return parameters.stagnation_iterations > 0 && mass_defect < mass_bound &&
+             update < parameters.stagnation_update_tolerance;
+    }
+
+    template <int dim>
     StepResult
     TwoPhaseSolver<dim>::solve_time_step(const double dt, ConditionalOStream &verbose)
     {
@@ -487,10 +499,7 @@ namespace porofrac
           if (parameters.stagnation_iterations > 0 &&
               it >= last_progress + parameters.stagnation_iterations)
             {
-              const double mass_bound = parameters.stagnation_mass_tolerance > 0 ?
-                                          parameters.stagnation_mass_tolerance :
-                                          parameters.mass_tolerance;
-              if (mass < mass_bound && last_update < parameters.stagnation_update_tolerance)
+              if (stagnation_fallback_holds(mass, last_update))
                 {
                   verbose << "      Newton: stagnated within the fallback update tolerance, accepted"
                           << std::endl;
@@ -582,6 +591,7 @@ namespace porofrac
                 if (std::abs(dpc - (dp[1] - dp[0])) > 1e-12 * std::abs(dp[1] - dp[0]))
                   ++n_chopped;
               }
+          const double previous_update = last_update;
           last_update = du_max / std::max(p_max, 1e-300);
           {
             static const char *kinds[] = {"matrix", "fracture", "interface", "intersection",
@@ -609,12 +619,16 @@ namespace porofrac
                 t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: assembly");
               const State full  = state;
               double      theta = 1.;
+              bool        decreased = false;
               Vector<double> trial;
               for (unsigned int k = 0; k < parameters.line_search_steps; ++k)
                 {
                   assemble(state, old_state, dt, trial, nullptr);
                   if (trial.l2_norm() <= r)
-                    break;
+                    {
+                      decreased = true;
+                      break;
+                    }
                   theta *= 0.5;
                   for (unsigned int i = 0; i < grid.n_nodes(); ++i)
                     for (unsigned int phase = 0; phase < 2; ++phase)
@@ -625,6 +639,21 @@ namespace porofrac
               // convergence.
               if (theta < 1.)
                 verbose << "        line search: step " << theta << std::endl;
+              // No damping of the Newton direction lowers |R|: the iterate sits on a kink (of
+              // S, of k_r or of the upwinding) and further iterations cycle around it. If the
+              // state before the step already meets the stagnation fallback (mass defect and
+              // the update that led to it), it is the answer; otherwise iterate on, and the
+              // stagnation counter decides.
+              if (!decreased && stagnation_fallback_holds(mass, previous_update))
+                {
+                  state = previous;
+                  verbose << "      Newton: no descent along the Newton direction within the "
+                             "fallback update tolerance, accepted"
+                          << std::endl;
+                  result.converged  = true;
+                  result.iterations = it + 1;
+                  return result;
+                }
             }
           result.iterations = it + 1;
         }

@@ -9,7 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/flow/laws.h>
-#include <porofrac/flow/sparse_lu.h>
+#include <porofrac/base/sparse_lu.h>
 #include <porofrac/flow/tpfa_grid.h>
 
 #include <array>
@@ -263,6 +263,9 @@ namespace porofrac
       double                    total_pore_volume() const;
       double                    pressure_scale(const Rock rock) const;
       double                    slope(const RockType &rock, const double pc) const;
+      /// The stagnation fallback of NewtonParameters: mass defect and normalized update small
+      /// enough for a stalled solve to count as converged.
+      bool stagnation_fallback_holds(const double mass_defect, const double update) const;
       mutable bool              entry_slope_active = false;
       double                    mean_pore_volume   = 0;
 

@@ -7,11 +7,11 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <porofrac/base/sparse_lu.h>
 #include <porofrac/geometry/cut_mesh.h>
 #include <porofrac/mechanics/contact_law.h>
 #include <porofrac/mechanics/multiplier_schur_complement.h>
@@ -214,7 +214,7 @@ namespace porofrac
       std::vector<double> cell_measures, face_measures;
       bool                solved_once = false;
       /// The last LU factorization of the contact Jacobian and the face rows it was built with.
-      std::unique_ptr<SparseDirectUMFPACK> factorization;
+      std::unique_ptr<SparseLU>            factorization;
       std::vector<Tensor<2, dim>>          factorized_AlR, factorized_AjR;
       /// Schur complement on the multipliers (built at the first solve(), kept while K is).
       /// y = J x for the linearization of solve() with face rows AlR, AjR (Schur refinement).
