@@ -117,11 +117,7 @@ namespace porofrac
                                  std::vector<std::string>(dim, "displacement"),
                                  DataOut<dim>::type_dof_data, interp);
         data_out.build_patches(mesh.mapping(), 2);
-        std::ofstream out(basename + "_displacement." + format);
-        if (format == "vtu")
-          data_out.write_vtu(out);
-        else
-          data_out.write_vtk(out);
+        geometry::write_data_out(data_out, basename + "_displacement." + format, format);
       }
 
       /// Relative L2 error (cell-measure weighted) of the matrix wetting pressure at time t.

@@ -121,12 +121,26 @@ namespace porofrac
       for (const auto &[name, values] : fields)
         data_out.add_data_vector(values, name, DataOut<dim>::type_cell_data);
       data_out.build_patches(mesh.mapping());
-      std::ofstream out(basename + "." + format);
-      AssertThrow(out, ExcMessage("cannot write '" + basename + "." + format + "'"));
+      write_data_out(data_out, basename + "." + format, format);
+    }
+
+
+
+    template <int dim>
+    void
+    write_data_out(DataOut<dim> &data_out, const std::string &filename, const std::string &format)
+    {
+      std::ofstream out(filename);
+      AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
       if (format == "vtk")
         data_out.write_vtk(out);
       else
-        data_out.write_vtu(out);
+        {
+          DataOutBase::VtkFlags flags;
+          flags.compression_level = DataOutBase::VtkFlags::best_speed;
+          data_out.set_flags(flags);
+          data_out.write_vtu(out);
+        }
     }
 
 
@@ -172,5 +186,9 @@ namespace porofrac
     write_mesh<2>(const CutMesh<2> &, const std::string &, const std::string &);
     template void
     write_mesh<3>(const CutMesh<3> &, const std::string &, const std::string &);
+    template void
+    write_data_out<2>(DataOut<2> &, const std::string &, const std::string &);
+    template void
+    write_data_out<3>(DataOut<3> &, const std::string &, const std::string &);
   } // namespace geometry
 } // namespace porofrac

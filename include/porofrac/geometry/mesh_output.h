@@ -3,6 +3,7 @@
 #define POROFRAC_GEOMETRY_MESH_OUTPUT_H
 
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
 
 #include <porofrac/geometry/cut_mesh.h>
 
@@ -14,6 +15,15 @@ namespace porofrac
 {
   namespace geometry
   {
+    /**
+     * Writes @p data_out (patches built) to @p filename as "vtu" or "vtk". VTU is zlib-compressed
+     * at the fastest level: deal.II's default (best compression) made output 6 % of the 5.3
+     * coupled run (1.2 s per snapshot on the paper mesh).
+     */
+    template <int dim>
+    void
+    write_data_out(DataOut<dim> &data_out, const std::string &filename, const std::string &format);
+
     /// Named per-fracture-face values (one per entry of CutMesh::fracture_faces).
     using FractureFields = std::vector<std::pair<std::string, std::vector<double>>>;
 
