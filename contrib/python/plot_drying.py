@@ -12,6 +12,10 @@ Usage: plot_drying.py --as AS_DIR --ssn SSN_DIR --as-u AS_U_DIR [--fields FIELDS
   ANDERSON_DIR  optional: active set + Anderson on p_E, added to Figs. 15 and 18
 Writes drying_fig14_states.png, drying_fig15_width.png, drying_fig16_aperture.png,
 drying_fig17_fields.png, drying_fig18_iterations.png into PICTURE_DIR.
+
+       plot_drying.py --iterations-only PICTURE.png --as AS_DIR [--ssn SSN_DIR]
+                      [--as-u AS_U_DIR] [--anderson ANDERSON_DIR] [--title TITLE]
+  Fig. 18 alone, for whichever runs are given (their history.csv is enough).
 """
 import argparse
 import csv
@@ -126,8 +130,10 @@ def plot_fields(directory, picture):
     plt.close(fig)
 
 
-def plot_iterations(runs, picture):
+def plot_iterations(runs, picture, title=None):
     fig, ax = plt.subplots(figsize=(6.5, 4))
+    if title:
+        ax.set_title(title, fontsize=9)
     for directory, label in runs:
         h = read_history(directory)
         total = sum(int(r["flow_newton_iterations"]) + int(r["mechanics_iterations"]) for r in h)
@@ -148,12 +154,23 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--as", dest="as_dir", required=True)
-    parser.add_argument("--ssn", required=True)
-    parser.add_argument("--as-u", dest="as_u", required=True)
+    parser.add_argument("--ssn")
+    parser.add_argument("--as-u", dest="as_u")
     parser.add_argument("--fields")
     parser.add_argument("--anderson")
-    parser.add_argument("--out", required=True)
+    parser.add_argument("--out")
+    parser.add_argument("--iterations-only")
+    parser.add_argument("--title")
     a = parser.parse_args()
+    if a.iterations_only:
+        runs = [(d, label) for d, label in [(a.as_dir, "active set + NK(p_E)"),
+                                            (a.ssn, "semi-smooth Newton + NK(p_E)"),
+                                            (a.as_u, "active set + NK(u)"),
+                                            (a.anderson, "active set + Anderson(p_E)")] if d]
+        plot_iterations(runs, a.iterations_only, a.title)
+        return
+    if not (a.ssn and a.as_u and a.out):
+        parser.error("--ssn, --as-u and --out are required unless --iterations-only is given")
     fields = a.fields or a.as_dir
     times = [0., 1 * YEAR, 50 * YEAR, 200 * YEAR]
     plot_fracture_field(fields, times, os.path.join(a.out, "drying_fig14_states.png"), "state",
