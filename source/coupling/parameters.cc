@@ -33,6 +33,10 @@ namespace porofrac
       prm.declare_entry("Kozeny-Carman", "true", Patterns::Bool(),
                         "Matrix permeability K0 phi^3/(1-phi)^2 (1-phi0)^2/phi0^3 of the previous "
                         "step's porosity (explicit in time); false: K = K0.");
+      prm.declare_entry("Extrapolate initial guess", "false", Patterns::Bool(),
+                        "Start the fixed point of a time step from x_n + (dt_n/dt_{n-1}) (x_n - "
+                        "x_{n-1}) (x = p_E or the displacement measures), the linear "
+                        "extrapolation of the last two accepted steps; false: from x_n.");
       prm.leave_subsection();
     }
 
@@ -52,6 +56,7 @@ namespace porofrac
       inner_flow_residual_tolerance = prm.get_double("Inner flow residual tolerance");
       inner_flow_update_tolerance   = prm.get_double("Inner flow update tolerance");
       kozeny_carman                 = prm.get_bool("Kozeny-Carman");
+      extrapolate_initial_guess     = prm.get_bool("Extrapolate initial guess");
       prm.leave_subsection();
       check_input(biot_coefficient >= 0 && biot_coefficient <= 1, "Coupling/Biot coefficient",
                   "must lie in [0, 1], got " + io::to_text(biot_coefficient));

@@ -172,6 +172,22 @@ namespace porofrac
 
 
     template <int dim>
+    Vector<double>
+    Poromechanics<dim>::initial_guess(const Vector<double> &x_old,
+                                      const Vector<double> &x_older) const
+    {
+      Vector<double> x = x_old;
+      if (parameters.extrapolate_initial_guess && dt_old > 0 && x_older.size() == x.size())
+        {
+          const double ratio = dt / dt_old;
+          x.sadd(1. + ratio, -ratio, x_older);
+        }
+      return x;
+    }
+
+
+
+    template <int dim>
     CoupledStepReport
     Poromechanics<dim>::solve_time_step(const double time_step)
     {
@@ -199,7 +215,7 @@ namespace porofrac
         {
           if (parameters.variable == CouplingVariable::equivalent_pressure)
             {
-              Vector<double> x = p_E_old;
+              Vector<double> x = initial_guess(p_E_old, p_E_older);
               result = fixed_point.solve(
                 [this](const Vector<double> &x, Vector<double> &gx) { map_pressure(x, gx); }, x);
               // Leave every field consistent with one evaluation at the solution.
@@ -212,7 +228,7 @@ namespace porofrac
             }
           else
             {
-              Vector<double> y = y_old;
+              Vector<double> y = initial_guess(y_old, y_older);
               result = fixed_point.solve(
                 [this](const Vector<double> &y, Vector<double> &gy) { map_displacement(y, gy); },
                 y);
@@ -269,8 +285,11 @@ namespace porofrac
       // The porosity reached by the step, (11d), kept for output and Kozeny-Carman.
       for (unsigned int K = 0; K < n_matrix; ++K)
         grid.porosity[K] = solver.porosity(solver.state, K);
-      p_E_old = p_E;
-      y_old   = displacement_measures();
+      p_E_older = p_E_old;
+      y_older   = y_old;
+      dt_old    = dt;
+      p_E_old   = p_E;
+      y_old     = displacement_measures();
       u_old   = mechanics.displacement();
       for (unsigned int f = 0; f < n_fracture; ++f)
         jump_old[f] = mechanics.jump(f);

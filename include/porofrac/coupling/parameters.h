@@ -33,6 +33,9 @@ namespace porofrac
       double inner_flow_update_tolerance   = 1e-12;
       /// Kozeny-Carman permeability of the previous step's porosity (explicit in time).
       bool   kozeny_carman = true;
+      /// Start each step's fixed point from the linear extrapolation in time of the last two
+      /// accepted states instead of the last one.
+      bool   extrapolate_initial_guess = false;
       FixedPointParameters fixed_point;
 
       static void

@@ -160,6 +160,12 @@ namespace porofrac
       Vector<double>           p_E_initial;
       Vector<double>           y_initial; ///< div u^0, [u^0]_n
       Vector<double>           y_old;     ///< accepted
+      /// The accepted states before p_E_old and y_old, and the step between them (0: none yet).
+      Vector<double>           p_E_older, y_older;
+      double                   dt_old = 0;
+      /// x_old + (dt/dt_old)(x_old - x_older) with Extrapolate initial guess, else x_old.
+      Vector<double>
+      initial_guess(const Vector<double> &x_old, const Vector<double> &x_older) const;
       Vector<double>           u_old;     ///< accepted displacement
       std::vector<Tensor<1, dim>> jump_old;
       typename flow::TwoPhaseSolver<dim>::State flow_guess;
