@@ -82,6 +82,12 @@ namespace porofrac
                         "Also time one linear elasticity solve (every fracture open, UMFPACK "
                         "factorization + solve) on the same mesh; written to summary.json "
                         "(mechanics/linear_solve_time_s).");
+      prm.declare_entry("Write P2 reconstruction", "false", Patterns::Bool(),
+                        "2D: also write fracture_p2.csv, the paper's P2 reconstructions of the "
+                        "jump and the multiplier (as in the 5.2.1 errors) at 3 Gauss points per "
+                        "fracture face, in the face's local frame (n+, tangent), with the face's "
+                        "abscissa interval: enough to evaluate the P2 fields anywhere on the "
+                        "fracture (self-convergence studies, contrib/mechanics-convergence).");
       prm.declare_entry("Iteration table", "false", Patterns::Bool(),
                         "After the solve with the settings above (whose results are reported and "
                         "written), solve again for every contact method (active set, semismooth "
@@ -468,6 +474,22 @@ namespace porofrac
               data_out.write_vtk(out);
           }
       }
+
+      if (dim == 2 && prm.get({"Mechanics"}, "Write P2 reconstruction") == "true")
+        {
+          std::ofstream csv(context.path("fracture_p2.csv"));
+          csv << "fracture_id,face_id,s_begin,s_end,s,JxW,jump_n,jump_t,lambda_n,lambda_t\n"
+              << std::setprecision(12);
+          for (const auto &v : reconstruct_fracture_fields(problem, 3))
+            {
+              const auto          &face = mesh.fracture_faces[v.face];
+              const Tensor<2, dim> R    = problem.frame(v.face);
+              const Tensor<1, dim> j = R * v.jump, l = R * v.lambda;
+              csv << face.fracture_id << ',' << v.face << ',' << face.abscissa_begin << ','
+                  << face.abscissa_end << ',' << v.abscissa << ',' << v.JxW << ',' << j[0] << ','
+                  << j[dim - 1] << ',' << l[0] << ',' << l[dim - 1] << '\n';
+            }
+        }
 
       // Section 5.2.1: analytical solution, central 90 % of the fracture.
       if (prm.get({"Mechanics"}, "Analytical solution") == "single fracture")
