@@ -935,6 +935,30 @@ namespace porofrac
 
     template <int dim>
     void
+    ContactProblem<dim>::reset()
+    {
+      solved_once = false;
+      factorization.reset();
+      factorized_AlR.clear();
+      factorized_AjR.clear();
+      if (schur)
+        schur->clear_rows();
+    }
+
+    template <int dim>
+    void
+    ContactProblem<dim>::set_contact_solver(const ContactMethod method, const double c,
+                                            const bool stick_guess)
+    {
+      check_input(c > 0, "Mechanics/Complementarity parameter c", "must be positive");
+      prm.method      = method;
+      prm.c           = c;
+      prm.stick_guess = stick_guess;
+      reset();
+    }
+
+    template <int dim>
+    void
     ContactProblem<dim>::set_equivalent_pressures(const std::vector<double> &p_E_matrix,
                                                   const std::vector<double> &p_E_fracture,
                                                   const double               biot)

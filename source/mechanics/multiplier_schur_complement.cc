@@ -148,6 +148,17 @@ namespace porofrac
 
     template <int dim>
     void
+    MultiplierSchurComplement<dim>::clear_rows()
+    {
+      rows_l.clear();
+      rows_j.clear();
+      row_scale.clear();
+      S.reinit(0, 0);
+      factorized = false;
+    }
+
+    template <int dim>
+    void
     MultiplierSchurComplement<dim>::solve(const Vector<double> &rhs, Vector<double> &solution) const
     {
       Assert(factorized, ExcInternalError());

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace porofrac
 {
@@ -81,6 +82,22 @@ namespace porofrac
                         "Also time one linear elasticity solve (every fracture open, UMFPACK "
                         "factorization + solve) on the same mesh; written to summary.json "
                         "(mechanics/linear_solve_time_s).");
+      prm.declare_entry("Write P2 reconstruction", "false", Patterns::Bool(),
+                        "2D: also write fracture_p2.csv, the paper's P2 reconstructions of the "
+                        "jump and the multiplier (as in the 5.2.1 errors) at 3 Gauss points per "
+                        "fracture face, in the face's local frame (n+, tangent), with the face's "
+                        "abscissa interval: enough to evaluate the P2 fields anywhere on the "
+                        "fracture (self-convergence studies, contrib/mechanics-convergence).");
+      prm.declare_entry("Iteration table", "false", Patterns::Bool(),
+                        "After the solve with the settings above (whose results are reported and "
+                        "written), solve again for every contact method (active set, semismooth "
+                        "newton) x c in {1e6, 1e9, 1e11} x initial guess (stick, open), each "
+                        "from a cold start (initial guess, no state of the previous solve; the "
+                        "other Mechanics settings, e.g. the globalization, as above), sharing the "
+                        "assembled elasticity block and, with `Linear solver = schur complement`, "
+                        "its Cholesky factors and W. Iteration counts, convergence and residual "
+                        "histories (paper Tables 1-4) go to summary.json "
+                        "(mechanics/iteration_table) and to the results report.");
       prm.declare_entry("Dirichlet", "", Patterns::Anything(),
                         "Prescribed displacement components per outer boundary id, "
                         "'id: x=expr, y=expr; id: ...' (muparser in x, y, z).");
@@ -198,6 +215,70 @@ namespace porofrac
       return r;
     }
 
+
+    namespace
+    {
+      /**
+       * The paper's iteration tables (Tables 1-4) on the mesh of @p problem: every contact
+       * method x c x initial guess, each a cold solve (ContactProblem::set_contact_solver()),
+       * sharing the mesh-only data of the problem. Leaves the last cell's solution in @p problem.
+       */
+      template <int dim>
+      io::Json
+      run_iteration_table(ContactProblem<dim> &problem, io::RunContext &context)
+      {
+        io::Json table = io::Json::array();
+        for (const ContactMethod method :
+             {ContactMethod::active_set, ContactMethod::semismooth_newton})
+          for (const bool stick : {true, false})
+            for (const double c : {1e6, 1e9, 1e11})
+              {
+                const std::string name =
+                  method == ContactMethod::active_set ? "active set" : "semismooth newton";
+                problem.set_contact_solver(method, c, stick);
+                Timer       clock;
+                std::string failure;
+                try
+                  {
+                    problem.solve();
+                  }
+                catch (const SolverFailure &e)
+                  {
+                    failure = e.what();
+                  }
+                io::Json r = io::Json::object();
+                r["solver"]               = name;
+                r["initial_guess"]        = std::string(stick ? "stick" : "open");
+                r["c"]                    = c;
+                r["converged"]            = problem.converged;
+                r["nonlinear_iterations"] = problem.iterations;
+                r["last_residual"] =
+                  problem.residual_history.empty() ? 0. : problem.residual_history.back();
+                r["residuals"]              = problem.residual_history;
+                r["steps"]                  = problem.step_history;
+                r["line_search_backtracks"] = problem.backtracks;
+                r["cycles_detected"]        = problem.cycles_detected;
+                r["factorizations"]         = problem.factorizations;
+                r["wall_time_s"]            = clock.wall_time();
+                if (!failure.empty())
+                  r["failure"] = failure;
+                table.push_back(r);
+                std::ostringstream line;
+                line << "Mechanics: iteration table: " << name << ", "
+                     << (stick ? "stick" : "open") << " guess, c = " << std::scientific
+                     << std::setprecision(0) << c << ": ";
+                if (problem.converged)
+                  line << "converged in " << problem.iterations << " iterations";
+                else
+                  line << "not converged in " << problem.iterations << " iterations";
+                context.report << line.str() << std::endl;
+                context.progress << "    " << line.str() << " (" << std::defaultfloat
+                                 << std::setprecision(3) << clock.wall_time() << " s)"
+                                 << std::endl;
+              }
+        return table;
+      }
+    } // namespace
 
     template <int dim>
     void
@@ -394,6 +475,22 @@ namespace porofrac
           }
       }
 
+      if (dim == 2 && prm.get({"Mechanics"}, "Write P2 reconstruction") == "true")
+        {
+          std::ofstream csv(context.path("fracture_p2.csv"));
+          csv << "fracture_id,face_id,s_begin,s_end,s,JxW,jump_n,jump_t,lambda_n,lambda_t\n"
+              << std::setprecision(12);
+          for (const auto &v : reconstruct_fracture_fields(problem, 3))
+            {
+              const auto          &face = mesh.fracture_faces[v.face];
+              const Tensor<2, dim> R    = problem.frame(v.face);
+              const Tensor<1, dim> j = R * v.jump, l = R * v.lambda;
+              csv << face.fracture_id << ',' << v.face << ',' << face.abscissa_begin << ','
+                  << face.abscissa_end << ',' << v.abscissa << ',' << v.JxW << ',' << j[0] << ','
+                  << j[dim - 1] << ',' << l[0] << ',' << l[dim - 1] << '\n';
+            }
+        }
+
       // Section 5.2.1: analytical solution, central 90 % of the fracture.
       if (prm.get({"Mechanics"}, "Analytical solution") == "single fracture")
         {
@@ -462,6 +559,13 @@ namespace porofrac
           e["lambda_n_rel_l2_face_mean"] = ln_err;
           e["max_abs_jump_n"]            = max_jn;
           context.summary["errors"] = e;
+        }
+
+      // Paper Tables 1-4: every method x c x initial guess on this mesh, in this process.
+      if (prm.get({"Mechanics"}, "Iteration table") == "true")
+        {
+          context.progress << "*** Iteration table (12 cold solves)" << std::endl;
+          context.summary["mechanics"]["iteration_table"] = run_iteration_table(problem, context);
         }
     }
 

@@ -10,13 +10,13 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <porofrac/geometry/mesh_generator.h>
-#include <porofrac/geometry/parameters.h>
 #include <porofrac/mechanics/contact_problem.h>
 
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+
+#include "six_fractures.h"
 
 using namespace porofrac;
 using namespace dealii;
@@ -24,17 +24,7 @@ using namespace dealii;
 int
 main()
 {
-  geometry::GeometryParameters g;
-  g.domain    = "box";
-  g.box       = "(0, 0) (2, 1)";
-  g.fractures = "1: (0.2, 0.7) (0.5, 0.7) (0.8, 0.65); 2: (1.0, 0.3) (1.8, 0.4); "
-                "3: (0.2, 0.3) (0.6, 0.25); 4: (1.0, 0.4) (1.7, 0.85); "
-                "5: (1.5, 0.65) (2.0, 0.55); 6: (1.5, 0.05) (1.4, 0.25)";
-  g.mesh_size           = 0.1;
-  g.fracture_mesh_size  = 0.04;
-  g.transition_distance = 0.05;
-  g.global_refinements  = 0;
-  auto mesh             = geometry::make_cut_mesh<2>(g);
+  auto mesh = six_fractures::mesh(0.1, 0.04);
   std::cout << "fracture faces: " << mesh->fracture_faces.size() << std::endl;
 
   ConditionalOStream quiet(std::cout, false);
@@ -42,12 +32,7 @@ main()
   for (const auto method : {mechanics::ContactMethod::active_set,
                             mechanics::ContactMethod::semismooth_newton})
     {
-      mechanics::ContactParameters c;
-      c.young_modulus = 4e9;
-      c.poisson_ratio = 0.2;
-      c.dirichlet[2]  = {{0, "0"}, {1, "0"}};
-      c.dirichlet[3]  = {{0, "0.005"}, {1, "-0.002"}};
-      c.friction_all  = "0.5*(1+10*exp(-d^2/0.005))";
+      mechanics::ContactParameters c = six_fractures::contact_parameters();
       c.method        = method;
       c.stick_guess   = (method == mechanics::ContactMethod::semismooth_newton);
       c.c             = (method == mechanics::ContactMethod::semismooth_newton ? 1e11 : 1e9);

@@ -54,6 +54,23 @@ namespace porofrac
       solve(const bool warm_start = false);
 
       /**
+       * Forgets the previous solve: the next solve() starts from the deck's initial guess (even
+       * when warm-started) and refactorizes every matrix that depends on face rows (the LU of
+       * the full system, the dense LU of the Schur complement). What depends on the mesh only
+       * (K, its Cholesky factors, W = J K^{-1} B^T, the loads) is kept.
+       */
+      void
+      reset();
+
+      /**
+       * Changes the contact method, c and initial guess of the next solve() and calls reset(),
+       * so that the next solve() is a cold start identical to that of a fresh ContactProblem
+       * with these parameters (the iteration tables of paper Tables 1-4 in one process).
+       */
+      void
+      set_contact_solver(const ContactMethod method, const double c, const bool stick_guess);
+
+      /**
        * Poromechanical loads of paper eq. (11b): the weak form gains - int_Omega b p_E,m div v
        * + int_Gamma p_E,f [v]_n, with @p p_E_matrix constant per active cell (index
        * active_cell_index()) and @p p_E_fracture constant per fracture face (CutMesh index).
@@ -194,7 +211,7 @@ namespace porofrac
       apply_elasticity(Vector<double> &r) const;
 
       const geometry::CutMesh<dim> &mesh;
-      const ContactParameters        prm;
+      ContactParameters              prm; ///< only the contact solver may change
       ConditionalOStream            &progress;
       TimerOutput                   &timer;
 

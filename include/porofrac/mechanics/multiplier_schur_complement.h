@@ -61,6 +61,11 @@ namespace porofrac
       bool
       set_rows(const std::vector<Tensor<2, dim>> &AlR, const std::vector<Tensor<2, dim>> &AjR);
 
+      /// Forgets the face rows and the dense LU factors (the next set_rows() refactorizes);
+      /// K, its Cholesky factors and W are kept.
+      void
+      clear_rows();
+
       /// Solves the Jacobian system for @p rhs = (r_u, r_l) (r_u zero on constrained dofs).
       void
       solve(const Vector<double> &rhs, Vector<double> &solution) const;
