@@ -8,6 +8,8 @@
 
 namespace porofrac
 {
+  using namespace dealii;
+
   SparseLU::SparseLU(const unsigned int refinement_steps, const bool symmetric)
   {
     umfpack_dl_defaults(control);
@@ -28,7 +30,6 @@ namespace porofrac
     if (numeric)
       umfpack_dl_free_numeric(&numeric);
     numeric = nullptr;
-
   }
 
   void
@@ -37,7 +38,6 @@ namespace porofrac
     if (symbolic)
       umfpack_dl_free_symbolic(&symbolic);
     symbolic = nullptr;
-
   }
 
   void

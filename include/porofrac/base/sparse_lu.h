@@ -11,18 +11,16 @@
 
 namespace porofrac
 {
-  using namespace dealii;
-
   /**
-   * UMFPACK LU factorization of SparseMatrix<double> matrices that share one sparsity pattern,
-   * as in Newton's method: the symbolic analysis (fill-reducing ordering) is done once for the
-   * pattern and reused by every numeric factorization; only the values are copied per call.
+   * UMFPACK LU factorization of dealii::SparseMatrix<double> matrices that share one sparsity
+   * pattern, as in Newton's method: the symbolic analysis (fill-reducing ordering) is done once for
+   * the pattern and reused by every numeric factorization; only the values are copied per call.
    * deal.II's SparseDirectUMFPACK redoes both for every matrix and always refines the solution
    * iteratively (up to two extra solves and residuals per call).
    *
    * The matrices of PoroFrac (TPFA Jacobians, contact-mechanics saddle points) have symmetric
    * patterns, so UMFPACK's symmetric strategy (AMD on A + A^T, diagonal pivots preferred) is
-   * the default: on the paper's 5.3 mesh it factorizes the flow Jacobian about 25 % faster than
+   * the default: on the paper's 5.3 mesh it factorizes the flow Jacobian about 20 % faster than
    * the automatic choice (doc/coupling.md).
    *
    * factorize() throws std::runtime_error for a singular matrix or any UMFPACK error.
@@ -40,15 +38,15 @@ namespace porofrac
 
     /// Numeric factorization of @p matrix (symbolic analysis the first time a pattern is seen).
     void
-    factorize(const SparseMatrix<double> &matrix);
+    factorize(const dealii::SparseMatrix<double> &matrix);
 
     /// Overwrites @p x = b with the solution of A x = b for the last factorized A.
     void
-    solve(Vector<double> &x) const;
+    solve(dealii::Vector<double> &x) const;
 
     /// dst = A^{-1} src (the preconditioner interface of deal.II's solvers).
     void
-    vmult(Vector<double> &dst, const Vector<double> &src) const;
+    vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const;
 
     /// Nonzeros of L and U in the last factorization (UMFPACK Info).
     double
@@ -59,14 +57,14 @@ namespace porofrac
 
   private:
     void
-    analyse(const SparseMatrix<double> &matrix);
+    analyse(const dealii::SparseMatrix<double> &matrix);
     void
     free_numeric();
     void
     free_symbolic();
 
-    const SparsityPattern *pattern      = nullptr;
-    std::size_t            pattern_size = 0;
+    const dealii::SparsityPattern *pattern      = nullptr;
+    std::size_t                    pattern_size = 0;
     /// Row-compressed copy with sorted columns (UMFPACK's column form of the transpose).
     std::vector<SuiteSparse_long> row_start, columns;
     std::vector<double>           values;
