@@ -31,19 +31,16 @@ namespace porofrac
       K.factorize(base_matrix, n_u);
       time_cholesky = clock.wall_time();
 
-      // W = J K^{-1} B^T = G M with G = J K^{-1} J^T = Y^T Y, Y = L^{-1} P J^T (K = P^T L L^T P).
-      // A column of J^T lives on the few dofs of one face, so its forward substitution only
-      // touches the reach of those dofs in the elimination tree (a path to the root through the
-      // separators): Y is sparse, and G is accumulated row by row of Y,
-      // G += y_r^T y_r, which costs sum_r (columns reaching row r)^2 instead of m full solves.
+      // W = J K^{-1} B^T = G M with G = J K^{-1} J^T (M = face measures): the columns of J^T
+      // live on the few dofs of one face each, so G is formed by the sparse-column Gram
+      // product of the Cholesky factor (SparseCholesky::inverse_gram).
       clock.restart();
       const unsigned int m = dim * n_f;
-      std::vector<std::vector<std::pair<unsigned int, double>>> Y_rows(n_u);
-      std::vector<std::pair<unsigned int, double>>              b, y;
+      std::vector<std::vector<std::pair<unsigned int, double>>> columns(m);
       for (unsigned int k = 0; k < m; ++k)
         {
           const unsigned int g = k / dim, d = k % dim;
-          b.clear();
+          auto              &b = columns[k];
           for (const CouplingEntry &e : entries[g])
             if (e.component == d)
               b.emplace_back(e.dof, e.value / measures[g]);
@@ -56,48 +53,14 @@ namespace porofrac
             else
               b[w++] = b[i];
           b.resize(w);
-          K.forward_sparse(b, y);
-          reach_entries += y.size();
-          for (const auto &[r, v] : y)
-            Y_rows[r].emplace_back(k, v);
         }
-      FullMatrix<double> G(m, m);
-      for (const auto &row : Y_rows)
-        for (unsigned int a = 0; a < row.size(); ++a)
-          {
-            const double va = row[a].second;
-            double      *Ga = &G(row[a].first, 0);
-            for (unsigned int c = a; c < row.size(); ++c)
-              Ga[row[c].first] += va * row[c].second;
-          }
+      FullMatrix<double> G;
+      reach_entries = K.inverse_gram(columns, G);
       W.reinit(m, m);
       for (unsigned int i = 0; i < m; ++i)
         for (unsigned int j = 0; j < m; ++j)
-          W(i, j) = (i <= j ? G(i, j) : G(j, i)) * measures[j / dim];
+          W(i, j) = G(i, j) * measures[j / dim];
       time_form_W = clock.wall_time();
-    }
-
-    template <int dim>
-    void
-    MultiplierSchurComplement<dim>::jump(const double *x, Vector<double> &j) const
-    {
-      j = 0;
-      for (unsigned int f = 0; f < n_f; ++f)
-        {
-          for (const CouplingEntry &e : entries[f])
-            j(dim * f + e.component) += e.value * x[e.dof];
-          for (unsigned int c = 0; c < dim; ++c)
-            j(dim * f + c) /= measures[f];
-        }
-    }
-
-    template <int dim>
-    void
-    MultiplierSchurComplement<dim>::subtract_coupling(const Vector<double> &l, double *x) const
-    {
-      for (unsigned int f = 0; f < n_f; ++f)
-        for (const CouplingEntry &e : entries[f])
-          x[e.dof] -= e.value * l(dim * f + e.component);
     }
 
     template <int dim>
@@ -164,13 +127,13 @@ namespace porofrac
       Assert(factorized, ExcInternalError());
       const unsigned int m = dim * n_f;
       Timer              clock;
-      // y = K^{-1} r_u
+      // z = L^{-1} P r_u; J K^{-1} r_u = Y^T z with Y = L^{-1} P J^T (kept from forming W).
       std::vector<double> y(rhs.begin(), rhs.begin() + n_u);
-      K.solve(y, 1);
+      K.forward(y);
       time_solves += clock.wall_time();
-      // (A_l - A_j W) dl = r_l - A_j J y
+      // (A_l - A_j W) dl = r_l - A_j J K^{-1} r_u
       Vector<double> j(m), dl(m);
-      jump(y.data(), j);
+      K.gram_factor_transpose_vmult(y, j);
       for (unsigned int f = 0; f < n_f; ++f)
         for (unsigned int i = 0; i < dim; ++i)
           {
@@ -180,11 +143,14 @@ namespace porofrac
             dl(dim * f + i) = r * row_scale[dim * f + i];
           }
       S.solve(dl);
-      // du = K^{-1} (r_u - B^T dl)
+      // du = K^{-1} (r_u - B^T dl) = P^T L^{-T} (z - Y M dl): one triangular solve pair per
+      // iteration.
       clock.restart();
-      std::copy(rhs.begin(), rhs.begin() + n_u, y.begin());
-      subtract_coupling(dl, y.data());
-      K.solve(y, 1);
+      Vector<double> scaled(m);
+      for (unsigned int i = 0; i < m; ++i)
+        scaled(i) = measures[i / dim] * dl(i);
+      K.gram_factor_vmult_subtract(scaled, y);
+      K.backward(y);
       time_solves += clock.wall_time();
       for (unsigned int i = 0; i < n_u; ++i)
         solution(i) = y[i];

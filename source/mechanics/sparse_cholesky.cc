@@ -2,10 +2,20 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/sparse_cholesky.h>
 
+#include <deal.II/lac/lapack_templates.h>
+
 #include <cholmod.h>
+
+#include <algorithm>
 
 #include <cstring>
 #include <sstream>
+
+extern "C" void
+dtrsm_(const char *side, const char *uplo, const char *transa, const char *diag,
+       const dealii::types::blas_int *m, const dealii::types::blas_int *n, const double *alpha,
+       const double *a, const dealii::types::blas_int *lda, double *b,
+       const dealii::types::blas_int *ldb);
 
 namespace porofrac
 {
@@ -15,20 +25,33 @@ namespace porofrac
     {
       cholmod_common  common;
       cholmod_factor *factor = nullptr;
-      /// Workspace of the sparse solves (cholmod_solve2).
-      cholmod_dense  *B = nullptr, *X = nullptr, *Y = nullptr, *E = nullptr;
-      cholmod_sparse *Bset = nullptr, *Xset = nullptr;
-      std::vector<int> inverse_permutation;
 
-      void
-      free_workspace()
+      /// Rows [first_row, first_row + n_rows) of Y = L^{-1} P B in the columns that reach them
+      /// (dense, column-major): one block per supernode, kept by inverse_gram().
+      struct YBlock
       {
-        for (cholmod_dense **d : {&B, &X, &Y, &E})
-          if (*d)
-            cholmod_free_dense(d, &common);
-        for (cholmod_sparse **sp : {&Bset, &Xset})
-          if (*sp)
-            cholmod_free_sparse(sp, &common);
+        int                       first_row, n_rows;
+        std::vector<unsigned int> columns;
+        std::vector<double>       values;
+      };
+      std::vector<YBlock> Y;
+
+      /// x = op(x) for the CHOLMOD solve type @p system, in place.
+      void
+      apply(const int system, double *x, const unsigned int n, const unsigned int n_columns)
+      {
+        cholmod_dense B;
+        B.nrow  = n;
+        B.ncol  = n_columns;
+        B.nzmax = std::size_t(n) * n_columns;
+        B.d     = n;
+        B.x     = x;
+        B.z     = nullptr;
+        B.xtype = CHOLMOD_REAL;
+        B.dtype = CHOLMOD_DOUBLE;
+        cholmod_dense *X = cholmod_solve(system, factor, &B, &common);
+        std::memcpy(x, X->x, sizeof(double) * B.nzmax);
+        cholmod_free_dense(&X, &common);
       }
     };
 
@@ -43,7 +66,6 @@ namespace porofrac
 
     SparseCholesky::~SparseCholesky()
     {
-      data->free_workspace();
       if (data->factor)
         cholmod_free_factor(&data->factor, &data->common);
       cholmod_finish(&data->common);
@@ -54,8 +76,6 @@ namespace porofrac
     SparseCholesky::factorize(const SparseMatrix<double> &matrix, const unsigned int n_rows)
     {
       n = n_rows;
-      data->free_workspace();
-      data->inverse_permutation.clear();
       if (data->factor)
         cholmod_free_factor(&data->factor, &data->common);
       // Row i of the (symmetric) CSR matrix is column i of the CSC matrix; keep the entries
@@ -105,18 +125,56 @@ namespace porofrac
       AssertDimension(block.size(), std::size_t(n) * n_columns);
       if (n_columns == 0)
         return;
-      cholmod_dense B;
-      B.nrow  = n;
-      B.ncol  = n_columns;
-      B.nzmax = std::size_t(n) * n_columns;
-      B.d     = n;
-      B.x     = block.data();
-      B.z     = nullptr;
-      B.xtype = CHOLMOD_REAL;
-      B.dtype = CHOLMOD_DOUBLE;
-      cholmod_dense *X = cholmod_solve(CHOLMOD_A, data->factor, &B, &data->common);
-      std::memcpy(block.data(), X->x, sizeof(double) * B.nzmax);
-      cholmod_free_dense(&X, &data->common);
+      data->apply(CHOLMOD_A, block.data(), n, n_columns);
+    }
+
+    void
+    SparseCholesky::forward(std::vector<double> &x) const
+    {
+      AssertDimension(x.size(), n);
+      data->apply(CHOLMOD_P, x.data(), n, 1);
+      data->apply(CHOLMOD_L, x.data(), n, 1);
+    }
+
+    void
+    SparseCholesky::backward(std::vector<double> &x) const
+    {
+      AssertDimension(x.size(), n);
+      data->apply(CHOLMOD_Lt, x.data(), n, 1);
+      data->apply(CHOLMOD_Pt, x.data(), n, 1);
+    }
+
+    void
+    SparseCholesky::gram_factor_transpose_vmult(const std::vector<double> &z,
+                                                Vector<double>            &out) const
+    {
+      out = 0;
+      for (const auto &b : data->Y)
+        for (unsigned int a = 0; a < b.columns.size(); ++a)
+          {
+            const double *y = b.values.data() + std::size_t(a) * b.n_rows;
+            const double *x = z.data() + b.first_row;
+            double        sum = 0;
+            for (int i = 0; i < b.n_rows; ++i)
+              sum += y[i] * x[i];
+            out(b.columns[a]) += sum;
+          }
+    }
+
+    void
+    SparseCholesky::gram_factor_vmult_subtract(const Vector<double> &v,
+                                               std::vector<double>  &z) const
+    {
+      for (const auto &b : data->Y)
+        for (unsigned int a = 0; a < b.columns.size(); ++a)
+          {
+            const double  va = v(b.columns[a]);
+            const double *y  = b.values.data() + std::size_t(a) * b.n_rows;
+            double       *x  = z.data() + b.first_row;
+            if (va != 0)
+              for (int i = 0; i < b.n_rows; ++i)
+                x[i] -= va * y[i];
+          }
     }
 
     void
@@ -128,46 +186,141 @@ namespace porofrac
       std::copy(b.begin(), b.end(), x.begin());
     }
 
-    void
-    SparseCholesky::forward_sparse(const std::vector<std::pair<unsigned int, double>> &b,
-                                   std::vector<std::pair<unsigned int, double>>       &y)
+    std::size_t
+    SparseCholesky::inverse_gram(
+      const std::vector<std::vector<std::pair<unsigned int, double>>> &columns,
+      FullMatrix<double>                                             &G) const
     {
-      cholmod_common &c = data->common;
-      if (data->inverse_permutation.empty())
+      const cholmod_factor *L = data->factor;
+      data->Y.clear();
+      Assert(L && L->is_super && L->is_ll, ExcInternalError());
+      const int     nsuper = L->nsuper;
+      const int    *super  = static_cast<const int *>(L->super);
+      const int    *pi     = static_cast<const int *>(L->pi);
+      const int    *px     = static_cast<const int *>(L->px);
+      const int    *Ls     = static_cast<const int *>(L->s);
+      const double *Lx     = static_cast<const double *>(L->x);
+      const int    *perm   = static_cast<const int *>(L->Perm);
+      const unsigned int m = columns.size();
+
+      // Supernode of each (permuted) column of L, and the supernodal elimination tree: the
+      // parent of s holds the first row of s below its diagonal block.
+      std::vector<int> supernode_of(n), parent(nsuper, -1), row_of(n);
+      for (int s = 0; s < nsuper; ++s)
         {
-          // (P b)(k) = b(Perm[k]): entry b(i) goes to row IPerm[i] of L.
-          data->inverse_permutation.resize(n);
-          const int *perm = static_cast<const int *>(data->factor->Perm);
-          for (unsigned int k = 0; k < n; ++k)
-            data->inverse_permutation[perm ? perm[k] : k] = k;
-          data->B    = cholmod_zeros(n, 1, CHOLMOD_REAL, &c);
-          data->Bset = cholmod_allocate_sparse(n, 1, n, 0, 1, 0, CHOLMOD_PATTERN, &c);
+          for (int j = super[s]; j < super[s + 1]; ++j)
+            supernode_of[j] = s;
         }
-      double *Bx   = static_cast<double *>(data->B->x);
-      int    *Bp   = static_cast<int *>(data->Bset->p);
-      int    *Bi   = static_cast<int *>(data->Bset->i);
-      Bp[0]        = 0;
-      unsigned int k = 0;
-      for (const auto &[i, v] : b)
+      for (int s = 0; s < nsuper; ++s)
         {
-          const int row = data->inverse_permutation[i];
-          Bx[row]       = v;
-          Bi[k++]       = row;
+          const int n_columns = super[s + 1] - super[s];
+          if (pi[s + 1] - pi[s] > n_columns)
+            parent[s] = supernode_of[Ls[pi[s] + n_columns]];
         }
-      Bp[1] = k;
-      if (!cholmod_solve2(CHOLMOD_L, data->factor, data->B, data->Bset, &data->X, &data->Xset,
-                          &data->Y, &data->E, &c))
-        throw SolverFailure("sparse forward substitution failed (CHOLMOD status " +
-                            std::to_string(c.status) + ")");
-      for (unsigned int j = 0; j < k; ++j)
-        Bx[Bi[j]] = 0;
-      const int    *Xp = static_cast<const int *>(data->Xset->p);
-      const int    *Xi = static_cast<const int *>(data->Xset->i);
-      const double *Xx = static_cast<const double *>(data->X->x);
-      y.clear();
-      for (int p = Xp[0]; p < Xp[1]; ++p)
-        if (Xx[Xi[p]] != 0)
-          y.emplace_back(Xi[p], Xx[Xi[p]]);
+      for (unsigned int k = 0; k < n; ++k)
+        row_of[perm ? perm[k] : k] = k; // (P b)(k) = b(perm[k])
+
+      // Columns of B reaching each supernode (sorted, since k increases): the union of the
+      // paths from the supernodes of their rows to the root.
+      std::vector<std::vector<unsigned int>> reaching(nsuper);
+      {
+        std::vector<int> mark(nsuper, -1);
+        for (unsigned int k = 0; k < m; ++k)
+          for (const auto &entry : columns[k])
+            for (int s = supernode_of[row_of[entry.first]]; s != -1 && mark[s] != int(k);
+                 s = parent[s])
+              {
+                mark[s] = k;
+                reaching[s].push_back(k);
+              }
+      }
+      const auto position = [&](const int s, const unsigned int k) {
+        return std::lower_bound(reaching[s].begin(), reaching[s].end(), k) - reaching[s].begin();
+      };
+
+      // Dense blocks of Y (rows of supernode s x columns reaching it, column-major), allocated
+      // when first touched and released once s is done.
+      std::vector<std::vector<double>> block(nsuper);
+      const auto block_of = [&](const int s) -> std::vector<double> & {
+        if (block[s].empty())
+          block[s].assign(std::size_t(super[s + 1] - super[s]) * reaching[s].size(), 0.);
+        return block[s];
+      };
+      for (unsigned int k = 0; k < m; ++k)
+        for (const auto &[row, value] : columns[k])
+          {
+            const int j = row_of[row], s = supernode_of[j], n_columns = super[s + 1] - super[s];
+            block_of(s)[(j - super[s]) + position(s, k) * n_columns] += value;
+          }
+
+      data->Y.clear();
+      std::vector<double> Gd(std::size_t(m) * m, 0.), update, gram;
+      std::vector<std::ptrdiff_t> target_column;
+      std::size_t                 nonzeros = 0;
+      gram_flops                           = 0;
+      for (int s = 0; s < nsuper; ++s)
+        {
+          const std::vector<unsigned int> &cols = reaching[s];
+          if (cols.empty())
+            continue;
+          const types::blas_int ncol = super[s + 1] - super[s], nrow = pi[s + 1] - pi[s],
+                                nbelow = nrow - ncol, kk = cols.size();
+          std::vector<double> &Y     = block_of(s);
+          const double        *L_s   = Lx + px[s];
+          const double         one = 1., zero = 0.;
+          // Y_s = L_ss^{-1} Y_s
+          dtrsm_("L", "L", "N", "N", &ncol, &kk, &one, L_s, &nrow, Y.data(), &ncol);
+          gram_flops += double(ncol) * ncol * kk;
+          nonzeros += std::size_t(ncol) * kk;
+          // G(cols, cols) += Y_s^T Y_s (upper triangle in column-major Gd: row <= column)
+          if (std::size_t(kk) == m)
+            syrk("U", "T", &kk, &ncol, &one, Y.data(), &ncol, &one, Gd.data(), &kk);
+          else
+            {
+              gram.resize(std::size_t(kk) * kk);
+              syrk("U", "T", &kk, &ncol, &one, Y.data(), &ncol, &zero, gram.data(), &kk);
+              for (types::blas_int b = 0; b < kk; ++b)
+                for (types::blas_int a = 0; a <= b; ++a)
+                  Gd[cols[a] + std::size_t(cols[b]) * m] += gram[a + std::size_t(b) * kk];
+            }
+          gram_flops += double(ncol) * kk * (kk + 1);
+          // Rows below the diagonal block: Y_t -= L_bs Y_s for the ancestors t holding them.
+          if (nbelow > 0)
+            {
+              update.resize(std::size_t(nbelow) * kk);
+              gemm("N", "N", &nbelow, &kk, &ncol, &one, L_s + ncol, &nrow, Y.data(), &ncol,
+                   &zero, update.data(), &nbelow);
+              gram_flops += 2. * nbelow * ncol * kk;
+              const int *rows = Ls + pi[s] + ncol;
+              for (types::blas_int i = 0; i < nbelow;)
+                {
+                  const int t = supernode_of[rows[i]], t_columns = super[t + 1] - super[t];
+                  target_column.resize(kk);
+                  // cols is a subset of reaching[t] (both sorted): merge.
+                  const std::vector<unsigned int> &cols_t = reaching[t];
+                  for (types::blas_int a = 0, b = 0; a < kk; ++a)
+                    {
+                      while (cols_t[b] != cols[a])
+                        ++b;
+                      target_column[a] = std::ptrdiff_t(b) * t_columns;
+                    }
+                  std::vector<double> &Y_t = block_of(t);
+                  for (; i < nbelow && supernode_of[rows[i]] == t; ++i)
+                    {
+                      double *y = Y_t.data() + (rows[i] - super[t]);
+                      for (types::blas_int a = 0; a < kk; ++a)
+                        y[target_column[a]] -= update[i + std::size_t(a) * nbelow];
+                    }
+                }
+            }
+          data->Y.push_back({super[s], int(ncol), cols, std::move(Y)});
+          std::vector<double>().swap(Y);
+        }
+      G.reinit(m, m);
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = i; j < m; ++j)
+          G(i, j) = G(j, i) = Gd[i + std::size_t(j) * m];
+      return nonzeros;
     }
 
     double

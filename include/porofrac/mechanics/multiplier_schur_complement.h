@@ -36,11 +36,12 @@ namespace porofrac
      *   [ A_j J   A_l ] [dl] = [r_l],       B^T: coupling, B^T = J^T M (M = face measures),
      *
      * with J the face-mean jump operator [u]_sigma of eq. (10) and A_l, A_j the dim x dim face
-     * rows (global frame). K is factorized once (Cholesky) and W = J K^{-1} B^T (dim n_faces
-     * square, dense) is formed once by blocked back-substitutions. Each iteration then solves
-     * the small dense system (A_l - A_j W) dl = r_l - A_j J K^{-1} r_u (LU, reused while the face
-     * rows do not change) and recovers du = K^{-1} (r_u - B^T dl): two sparse triangular solve
-     * pairs per iteration, instead of a sparse LU of the whole system.
+     * rows (global frame). K = P^T L L^T P is factorized once (Cholesky) and W = J K^{-1} B^T
+     * (dim n_faces square, dense) is formed once from the sparse Y = L^{-1} P J^T, which is kept.
+     * Each iteration then solves the small dense system (A_l - A_j W) dl = r_l - A_j Y^T z with
+     * z = L^{-1} P r_u (LU, reused while the face rows do not change) and recovers
+     * du = P^T L^{-T} (z - Y M dl): one sparse triangular solve pair per iteration, instead of
+     * a sparse LU of the whole system.
      */
     template <int dim>
     class MultiplierSchurComplement
@@ -85,13 +86,6 @@ namespace porofrac
       }
 
     private:
-      /// (J x)_(f, c): face-mean jump of a displacement vector.
-      void
-      jump(const double *x, Vector<double> &j) const;
-      /// x += -B^T l on the unconstrained dofs.
-      void
-      subtract_coupling(const Vector<double> &l, double *x) const;
-
       const unsigned int                       n_u, n_f;
       std::vector<std::vector<CouplingEntry>>  entries; ///< unconstrained coupling entries
       std::vector<double>                      measures;

@@ -2,6 +2,7 @@
 #ifndef POROFRAC_MECHANICS_SPARSE_CHOLESKY_H
 #define POROFRAC_MECHANICS_SPARSE_CHOLESKY_H
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -17,7 +18,8 @@ namespace porofrac
      * Sparse Cholesky factorization K = L L^T (CHOLMOD, supernodal, fill-reducing ordering) of
      * the leading n x n block of a symmetric positive definite deal.II matrix: the constrained
      * elasticity block of the contact system, which never changes across contact iterations.
-     * Solves one right-hand side or a block of them (column-major), the latter with level-3 BLAS.
+     * Solves one right-hand side or a block of them (column-major), the latter with level-3 BLAS,
+     * and forms B^T K^{-1} B for a sparse B (the multiplier Schur complement).
      * Throws SolverFailure when the block is not positive definite (e.g. a body without
      * Dirichlet condition that only the contact rows hold in place).
      */
@@ -49,14 +51,40 @@ namespace porofrac
       }
 
       /**
-       * Sparse forward substitution y = L^{-1} P b for a sparse @p b given as (row, value) pairs:
-       * only the entries in the reach of b in the elimination tree are computed, and returned as
-       * (row of L, value) pairs in @p y. The first call converts the factor to simplicial form
-       * (CHOLMOD restricts sparse solves to it); the solves above keep working with it.
+       * G = B^T K^{-1} B (m x m, dense, symmetric) for a sparse n x m matrix B given column by
+       * column as (row, value) pairs, as G = Y^T Y with Y = L^{-1} P B. A column of B that lives
+       * on a few rows only reaches the supernodes on their paths to the root of the elimination
+       * tree, so the forward substitution runs supernode by supernode on the columns that reach
+       * it (dense triangular solve and update, level-3 BLAS) and each supernode adds its rows of
+       * Y to G (rank-k update). Y is kept for gram_factor_*(). Returns the number of nonzeros
+       * of Y.
        */
+      std::size_t
+      inverse_gram(const std::vector<std::vector<std::pair<unsigned int, double>>> &columns,
+                   FullMatrix<double>                                             &G) const;
+      /// z = L^{-1} P z (forward half of a solve).
       void
-      forward_sparse(const std::vector<std::pair<unsigned int, double>> &b,
-                     std::vector<std::pair<unsigned int, double>>       &y);
+      forward(std::vector<double> &z) const;
+
+      /// x = P^T L^{-T} x (backward half of a solve).
+      void
+      backward(std::vector<double> &x) const;
+
+      /// out = Y^T z with the Y of the last inverse_gram(): B^T K^{-1} b = Y^T (L^{-1} P b).
+      void
+      gram_factor_transpose_vmult(const std::vector<double> &z, Vector<double> &out) const;
+
+      /// z -= Y v: K^{-1} (b - B v) = P^T L^{-T} (L^{-1} P b - Y v).
+      void
+      gram_factor_vmult_subtract(const Vector<double> &v, std::vector<double> &z) const;
+
+      /// Floating-point operations of the last inverse_gram() (triangular solves, updates and
+      /// rank-k updates).
+      double
+      inverse_gram_flops() const
+      {
+        return gram_flops;
+      }
 
       /// Number of nonzeros of the factor L.
       double
@@ -64,6 +92,7 @@ namespace porofrac
 
     private:
       unsigned int n = 0;
+      mutable double gram_flops = 0;
       struct Data;
       Data *data;
     };
