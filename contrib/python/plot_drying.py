@@ -16,6 +16,9 @@ drying_fig17_fields.png, drying_fig18_iterations.png into PICTURE_DIR.
        plot_drying.py --iterations-only PICTURE.png --as AS_DIR [--ssn SSN_DIR]
                       [--as-u AS_U_DIR] [--anderson ANDERSON_DIR] [--title TITLE]
   Fig. 18 alone, for whichever runs are given (their history.csv is enough).
+
+       plot_drying.py --width-only PICTURE.png --as AS_DIR [--ssn SSN_DIR] [--anderson DIR]
+  Fig. 15 alone (history.csv is enough).
 """
 import argparse
 import csv
@@ -161,7 +164,14 @@ def main():
     parser.add_argument("--out")
     parser.add_argument("--iterations-only")
     parser.add_argument("--title")
+    parser.add_argument("--width-only")
     a = parser.parse_args()
+    if a.width_only:
+        plot_width([(d, label, style) for d, label, style in
+                    [(a.as_dir, "active set (c = 1e6) + NK(p_E)", "-"),
+                     (a.ssn, "semi-smooth Newton (c = 1e9) + NK(p_E)", "--"),
+                     (a.anderson, "active set + Anderson(p_E)", ":")] if d], a.width_only)
+        return
     if a.iterations_only:
         runs = [(d, label) for d, label in [(a.as_dir, "active set + NK(p_E)"),
                                             (a.ssn, "semi-smooth Newton + NK(p_E)"),
