@@ -178,6 +178,7 @@ namespace porofrac
       dof_handler.distribute_dofs(fe);
       make_constraints();
       schur.reset();
+      schur_unavailable = false;
 
       const unsigned int n_u = dof_handler.n_dofs();
       const unsigned int N   = n_dofs();
@@ -625,22 +626,33 @@ namespace porofrac
       time_contact_rows = time_factorization = time_solves = time_residuals = 0;
       time_cholesky = time_form_W = 0;
       converged = false;
-      if (prm.schur_complement && !schur)
+      if (prm.schur_complement && !schur && !schur_unavailable)
         {
           TimerOutput::Scope t(timer, "Mechanics: Schur complement setup");
           std::vector<bool>  constrained(n_u);
           for (unsigned int i = 0; i < n_u; ++i)
             constrained[i] = constraints_hom.is_constrained(i);
-          schur = std::make_unique<MultiplierSchurComplement<dim>>(base_matrix, n_u, coupling,
-                                                                   face_measures, constrained);
-          time_cholesky = schur->time_cholesky;
-          time_form_W   = schur->time_form_W;
-          progress << "    Schur complement: Cholesky of K (" << n_u << " dofs, "
-                   << schur->cholesky().factor_nonzeros() << " nonzeros in L) "
-                   << time_cholesky << " s, W (" << dim * n_f << "^2, "
-                   << schur->reach_entries << " nonzeros in L^{-1} P J^T) " << time_form_W
-                   << " s"
-                   << std::endl;
+          try
+            {
+              schur = std::make_unique<MultiplierSchurComplement<dim>>(base_matrix, n_u, coupling,
+                                                                       face_measures, constrained);
+              time_cholesky = schur->time_cholesky;
+              time_form_W   = schur->time_form_W;
+              progress << "    Schur complement: Cholesky of K (" << n_u << " dofs, "
+                       << schur->cholesky().factor_nonzeros() << " nonzeros in L) "
+                       << time_cholesky << " s, W (" << dim * n_f << "^2, "
+                       << schur->reach_entries << " nonzeros in L^{-1} P J^T) " << time_form_W
+                       << " s" << std::endl;
+            }
+          catch (const SolverFailure &e)
+            {
+              // A body held in place by the contact rows only (no Dirichlet condition on one
+              // side of a through-going fracture) has a singular elasticity block: the full
+              // system is still regular, so solve it instead.
+              schur_unavailable = true;
+              progress << "    Schur complement unavailable (" << e.what()
+                       << "); solving the full system" << std::endl;
+            }
         }
       if (!(warm_start && solved_once))
         {
@@ -705,7 +717,7 @@ namespace porofrac
             // The Jacobian only depends on the face rows: when none changed (the active set
             // method with an unchanged active set, e.g. in warm-started coupled solves), the
             // factorization is reused.
-            if (!same_matrix && !prm.schur_complement)
+            if (!same_matrix && !schur)
               {
                 system_matrix.copy_from(base_matrix);
                 for (unsigned int fi = 0; fi < coupling.size(); ++fi)
@@ -736,7 +748,7 @@ namespace porofrac
               for (unsigned int fi = 0; fi < n_f; ++fi)
                 changed += (seen_states.back()[fi] != states[fi]);
             bool solved = false;
-            if (prm.schur_complement)
+            if (schur)
               {
                 // Schur complement on the multipliers (multiplier_schur_complement.h).
                 const double lu0 = schur->time_dense_lu, s0 = schur->time_solves;

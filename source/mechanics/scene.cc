@@ -325,6 +325,10 @@ namespace porofrac
                      << prm.get({"Mechanics"}, "Initial guess") << " guess, c = "
                      << std::scientific << std::setprecision(1) << cp.c << std::defaultfloat
                      << ": converged in " << problem.iterations << " iterations" << std::endl;
+      if (problem.schur_complement_unavailable())
+        context.report << "Mechanics: Schur complement unavailable (the elasticity block alone is "
+                          "singular); the full system was solved"
+                       << std::endl;
       context.report << "Mechanics: faces open " << counts[0] << ", stick " << counts[1]
                      << ", slip " << counts[2] << std::endl;
 
@@ -408,7 +412,9 @@ namespace porofrac
       timing["cholesky_s"]        = problem.time_cholesky;
       timing["form_W_s"]          = problem.time_form_W;
       m["timing"]                 = timing;
-      m["linear_solver"]          = prm.get({"Mechanics"}, "Linear solver");
+      m["linear_solver"] = problem.schur_complement_unavailable() ?
+                             std::string("full system (schur complement unavailable)") :
+                             prm.get({"Mechanics"}, "Linear solver");
       if (cp.time_linear_solve)
         {
           // One linear elasticity solve on the same mesh, in the same run (issue 3, item 8):

@@ -108,13 +108,19 @@ namespace porofrac
       cholmod_factorize(A, data->factor, &data->common);
       const int status = data->common.status;
       cholmod_free_sparse(&A, &data->common);
-      if (status != CHOLMOD_OK || data->factor->minor < n)
+      // A rigid-body mode makes the block singular; in floating point its last pivot may come
+      // out tiny and positive instead of failing, so also reject a negligible reciprocal
+      // condition estimate ((min_i L_ii / max_i L_ii)^2).
+      const double rcond = (status == CHOLMOD_OK && data->factor->minor >= n) ?
+                             cholmod_rcond(data->factor, &data->common) :
+                             0.;
+      if (status != CHOLMOD_OK || data->factor->minor < n || !(rcond > 1e-14))
         {
           std::ostringstream s;
           s << "Cholesky factorization of the elasticity block failed (CHOLMOD status " << status
             << ", leading minor " << data->factor->minor << " of " << n
-            << " not positive): the elasticity block alone is singular; use "
-               "'Mechanics/Linear solver = full system'";
+            << ", reciprocal condition estimate " << rcond
+            << "): the elasticity block alone is singular";
           throw SolverFailure(s.str());
         }
     }

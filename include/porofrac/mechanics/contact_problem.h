@@ -183,6 +183,14 @@ namespace porofrac
       stress(const typename DoFHandler<dim>::active_cell_iterator &cell,
              const Point<dim> &unit_point) const;
 
+      /// True when the Schur complement solver was asked for but the elasticity block alone
+      /// is singular, so that the full system is solved.
+      bool
+      schur_complement_unavailable() const
+      {
+        return schur_unavailable;
+      }
+
     private:
       void
       make_constraints();
@@ -240,6 +248,8 @@ namespace porofrac
                           const std::vector<Tensor<2, dim>> &AjR, const Vector<double> &x,
                           Vector<double> &y) const;
       std::unique_ptr<MultiplierSchurComplement<dim>> schur;
+      /// The elasticity block is singular (Cholesky failed): the full system is solved.
+      bool schur_unavailable = false;
 
     public:
       /// LU factorizations computed so far (each solve() reuses the last one while no face row
