@@ -176,10 +176,9 @@ namespace porofrac
           }
         // slip
         const double s = F * bb;
-        if (method == ContactMethod::active_set || s <= 1e-10 || dim == 2)
+        if (method == ContactMethod::active_set || s <= 1e-10)
           {
-            // lambda_tau - F lambda_n w = 0, w = a^k/|a^k| frozen. In 2D the exact Newton row
-            // coincides with this one (specs.md 3a, item 5).
+            // lambda_tau - F lambda_n w = 0, w = a^k/|a^k| frozen (Section 5.1).
             for (unsigned int i = 1; i < dim; ++i)
               {
                 A_lambda[i][i] = 1;
@@ -187,7 +186,12 @@ namespace porofrac
               }
             return st;
           }
-        // Regularized semi-smooth Newton slip row (HSW 2008; specs.md 3a item 3), 3D.
+        // Regularized semi-smooth Newton slip row (HSW 2008; specs.md 3a item 3), also in 2D:
+        // there I - n n^T = 0, so the unregularized exact row would coincide with the active-set
+        // row (specs.md 3a item 5), but M = (s/|a|)(1 - sign(a) lambda_tau / max(s, |lambda_tau|))
+        // does not vanish while lambda_tau^k is off the friction bound. With the active-set row
+        // instead, semi-smooth Newton from the open guess did not converge at c = 1e11 on 5.2.2
+        // (paper: 9-10 iterations); with this one it takes 8 (doc/benchmarks/mechanics.md 8.7).
         const Tensor<1, dim> lt  = tangential(lambda);
         const double         nlt = lt.norm();
         const Tensor<1, dim> h   = lt * (s / std::max(s, nlt));
