@@ -263,7 +263,6 @@ namespace porofrac
       std::vector<double> Gd(std::size_t(m) * m, 0.), update, gram;
       std::vector<std::ptrdiff_t> target_column;
       std::size_t                 nonzeros = 0;
-      gram_flops                           = 0;
       for (int s = 0; s < nsuper; ++s)
         {
           const std::vector<unsigned int> &cols = reaching[s];
@@ -276,7 +275,6 @@ namespace porofrac
           const double         one = 1., zero = 0.;
           // Y_s = L_ss^{-1} Y_s
           dtrsm_("L", "L", "N", "N", &ncol, &kk, &one, L_s, &nrow, Y.data(), &ncol);
-          gram_flops += double(ncol) * ncol * kk;
           nonzeros += std::size_t(ncol) * kk;
           // G(cols, cols) += Y_s^T Y_s (upper triangle in column-major Gd: row <= column)
           if (std::size_t(kk) == m)
@@ -289,14 +287,12 @@ namespace porofrac
                 for (types::blas_int a = 0; a <= b; ++a)
                   Gd[cols[a] + std::size_t(cols[b]) * m] += gram[a + std::size_t(b) * kk];
             }
-          gram_flops += double(ncol) * kk * (kk + 1);
           // Rows below the diagonal block: Y_t -= L_bs Y_s for the ancestors t holding them.
           if (nbelow > 0)
             {
               update.resize(std::size_t(nbelow) * kk);
               gemm("N", "N", &nbelow, &kk, &ncol, &one, L_s + ncol, &nrow, Y.data(), &ncol,
                    &zero, update.data(), &nbelow);
-              gram_flops += 2. * nbelow * ncol * kk;
               const int *rows = Ls + pi[s] + ncol;
               for (types::blas_int i = 0; i < nbelow;)
                 {
@@ -319,8 +315,9 @@ namespace porofrac
                     }
                 }
             }
-          data->Y.push_back({super[s], int(ncol), cols, std::move(Y)});
-          std::vector<double>().swap(Y);
+          // Supernode s is done: its column list and block move into the kept Y (only
+          // descendants, all processed, read reaching[s]).
+          data->Y.push_back({super[s], int(ncol), std::move(reaching[s]), std::move(Y)});
         }
       G.reinit(m, m);
       for (unsigned int i = 0; i < m; ++i)

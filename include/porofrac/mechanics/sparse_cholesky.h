@@ -78,21 +78,12 @@ namespace porofrac
       void
       gram_factor_vmult_subtract(const Vector<double> &v, std::vector<double> &z) const;
 
-      /// Floating-point operations of the last inverse_gram() (triangular solves, updates and
-      /// rank-k updates).
-      double
-      inverse_gram_flops() const
-      {
-        return gram_flops;
-      }
-
       /// Number of nonzeros of the factor L.
       double
       factor_nonzeros() const;
 
     private:
       unsigned int n = 0;
-      mutable double gram_flops = 0;
       struct Data;
       Data *data;
     };
