@@ -473,11 +473,9 @@ namespace porofrac
                                      std::vector<std::string>(dim, "displacement"),
                                      DataOut<dim>::type_dof_data, interp);
             data_out.build_patches(mesh.mapping(), 2);
-            std::ofstream out(context.path("displacement." + context.output_format));
-            if (context.output_format == "vtu")
-              data_out.write_vtu(out);
-            else
-              data_out.write_vtk(out);
+            geometry::write_data_out(data_out,
+                                     context.path("displacement." + context.output_format),
+                                     context.output_format);
           }
       }
 
