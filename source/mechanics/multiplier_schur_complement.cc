@@ -74,35 +74,110 @@ namespace porofrac
       const unsigned int m = dim * n_f;
       rows_l               = AlR;
       rows_j               = AjR;
-      S.reinit(m, m);
-      row_scale.assign(m, 1.);
-      // S = A_l - A_j W (face-block rows), each row equilibrated by its largest entry (the
-      // rows mix multiplier rows of order 1 with jump rows scaled by c, Section 5.1).
+
+      // Split each face's rows; for the rows without jump term, E_f^+ = E^T (E E^T)^{-1} and an
+      // orthonormal basis of null(E_f) (Gram-Schmidt on the columns of I - E_f^+ E_f).
+      kept_rows.assign(n_f, {});
+      free_rows.assign(n_f, {});
+      pseudo_inverse.assign(n_f, FullMatrix<double>());
+      null_basis.assign(n_f, FullMatrix<double>());
+      offset.assign(n_f + 1, 0);
       for (unsigned int f = 0; f < n_f; ++f)
-        for (unsigned int i = 0; i < dim; ++i)
+        {
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              bool has_jump = false;
+              for (unsigned int k = 0; k < dim; ++k)
+                has_jump = has_jump || AjR[f][i][k] != 0;
+              (has_jump ? kept_rows[f] : free_rows[f]).push_back(i);
+            }
+          const unsigned int n_free = free_rows[f].size();
+          offset[f + 1]             = offset[f] + dim - n_free;
+          FullMatrix<double> E(n_free, dim), projector(dim, dim);
+          for (unsigned int r = 0; r < n_free; ++r)
+            for (unsigned int k = 0; k < dim; ++k)
+              E(r, k) = AlR[f][free_rows[f][r]][k];
+          projector = IdentityMatrix(dim);
+          if (n_free > 0)
+            {
+              FullMatrix<double> EEt(n_free, n_free), EEt_inverse(n_free, n_free);
+              E.mTmult(EEt, E);
+              EEt_inverse.invert(EEt);
+              pseudo_inverse[f].reinit(dim, n_free);
+              E.Tmmult(pseudo_inverse[f], EEt_inverse);
+              FullMatrix<double> PE(dim, dim);
+              pseudo_inverse[f].mmult(PE, E);
+              projector.add(-1., PE);
+            }
+          null_basis[f].reinit(dim, dim - n_free);
+          unsigned int found = 0;
+          for (unsigned int k = 0; k < dim && found < dim - n_free; ++k)
+            {
+              Vector<double> v(dim);
+              for (unsigned int r = 0; r < dim; ++r)
+                v(r) = projector(r, k);
+              for (unsigned int b = 0; b < found; ++b)
+                {
+                  double dot = 0;
+                  for (unsigned int r = 0; r < dim; ++r)
+                    dot += v(r) * null_basis[f](r, b);
+                  for (unsigned int r = 0; r < dim; ++r)
+                    v(r) -= dot * null_basis[f](r, b);
+                }
+              const double norm = v.l2_norm();
+              if (norm > 1e-8)
+                {
+                  for (unsigned int r = 0; r < dim; ++r)
+                    null_basis[f](r, found) = v(r) / norm;
+                  ++found;
+                }
+            }
+          AssertThrow(found == dim - n_free, ExcInternalError());
+        }
+      const unsigned int m_r = offset[n_f];
+
+      // WN = W blockdiag(N_f): the columns of W for the reduced unknowns.
+      FullMatrix<double> WN(m, m_r);
+      for (unsigned int row = 0; row < m; ++row)
+        for (unsigned int g = 0; g < n_f; ++g)
+          for (unsigned int t = 0; t < null_basis[g].n(); ++t)
+            {
+              double s = 0;
+              for (unsigned int k = 0; k < dim; ++k)
+                s += W(row, dim * g + k) * null_basis[g](k, t);
+              WN(row, offset[g] + t) = s;
+            }
+      // S = (A_l - A_j W) N on the kept rows, each row equilibrated by its largest entry (the
+      // rows mix multiplier rows of order 1 with jump rows scaled by c, Section 5.1).
+      S.reinit(m_r, m_r);
+      row_scale.assign(m_r, 1.);
+      for (unsigned int f = 0; f < n_f; ++f)
+        for (unsigned int r = 0; r < kept_rows[f].size(); ++r)
           {
-            const unsigned int row = dim * f + i;
-            double             big = 0;
-            for (unsigned int col = 0; col < m; ++col)
+            const unsigned int i = kept_rows[f][r], row = offset[f] + r;
+            for (unsigned int col = 0; col < m_r; ++col)
               {
                 double s = 0;
                 for (unsigned int k = 0; k < dim; ++k)
                   if (AjR[f][i][k] != 0)
-                    s -= AjR[f][i][k] * W(dim * f + k, col);
+                    s -= AjR[f][i][k] * WN(dim * f + k, col);
                 S(row, col) = s;
               }
-            for (unsigned int k = 0; k < dim; ++k)
-              S(row, dim * f + k) += AlR[f][i][k];
-            for (unsigned int col = 0; col < m; ++col)
+            for (unsigned int t = 0; t < null_basis[f].n(); ++t)
+              for (unsigned int k = 0; k < dim; ++k)
+                S(row, offset[f] + t) += AlR[f][i][k] * null_basis[f](k, t);
+            double big = 0;
+            for (unsigned int col = 0; col < m_r; ++col)
               big = std::max(big, std::abs(S(row, col)));
             if (big > 0)
               {
                 row_scale[row] = 1. / big;
-                for (unsigned int col = 0; col < m; ++col)
+                for (unsigned int col = 0; col < m_r; ++col)
                   S(row, col) *= row_scale[row];
               }
           }
-      S.compute_lu_factorization();
+      if (m_r > 0)
+        S.compute_lu_factorization();
       factorized = true;
       ++n_dense_factorizations;
       time_dense_lu += clock.wall_time();
@@ -115,6 +190,11 @@ namespace porofrac
     {
       rows_l.clear();
       rows_j.clear();
+      kept_rows.clear();
+      free_rows.clear();
+      pseudo_inverse.clear();
+      null_basis.clear();
+      offset.clear();
       row_scale.clear();
       S.reinit(0, 0);
       factorized = false;
@@ -131,18 +211,44 @@ namespace porofrac
       std::vector<double> y(rhs.begin(), rhs.begin() + n_u);
       K.forward(y);
       time_solves += clock.wall_time();
-      // (A_l - A_j W) dl = r_l - A_j J K^{-1} r_u
-      Vector<double> j(m), dl(m);
+      // (A_l - A_j W) dl = r_l - A_j J K^{-1} r_u. Rows without jump term first: their part
+      // of dl is x_f = E_f^+ e_f; the kept rows then solve for t, dl_f = x_f + N_f t_f.
+      Vector<double> j(m), dl(m), x(m);
       K.gram_factor_transpose_vmult(y, j);
+      bool any_free = false;
       for (unsigned int f = 0; f < n_f; ++f)
-        for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int r = 0; r < free_rows[f].size(); ++r)
           {
-            double r = rhs(n_u + dim * f + i);
+            const double e = rhs(n_u + dim * f + free_rows[f][r]);
             for (unsigned int k = 0; k < dim; ++k)
-              r -= rows_j[f][i][k] * j(dim * f + k);
-            dl(dim * f + i) = r * row_scale[dim * f + i];
+              x(dim * f + k) += pseudo_inverse[f](k, r) * e;
+            any_free = true;
           }
-      S.solve(dl);
+      Vector<double> Wx(m);
+      if (any_free)
+        W.vmult(Wx, x);
+      const unsigned int m_r = offset[n_f];
+      Vector<double>     t(m_r);
+      for (unsigned int f = 0; f < n_f; ++f)
+        for (unsigned int r = 0; r < kept_rows[f].size(); ++r)
+          {
+            const unsigned int i = kept_rows[f][r];
+            double             b = rhs(n_u + dim * f + i);
+            for (unsigned int k = 0; k < dim; ++k)
+              b -= rows_j[f][i][k] * (j(dim * f + k) - Wx(dim * f + k)) +
+                   rows_l[f][i][k] * x(dim * f + k);
+            t(offset[f] + r) = b * row_scale[offset[f] + r];
+          }
+      if (m_r > 0)
+        S.solve(t);
+      for (unsigned int f = 0; f < n_f; ++f)
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            double v = x(dim * f + k);
+            for (unsigned int c = 0; c < null_basis[f].n(); ++c)
+              v += null_basis[f](k, c) * t(offset[f] + c);
+            dl(dim * f + k) = v;
+          }
       // du = K^{-1} (r_u - B^T dl) = P^T L^{-T} (z - Y M dl): one triangular solve pair per
       // iteration.
       clock.restart();

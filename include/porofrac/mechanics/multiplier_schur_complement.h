@@ -42,6 +42,12 @@ namespace porofrac
      * z = L^{-1} P r_u (LU, reused while the face rows do not change) and recovers
      * du = P^T L^{-T} (z - Y M dl): one sparse triangular solve pair per iteration, instead of
      * a sparse LU of the whole system.
+     *
+     * Face rows without a jump term (A_j row zero: every row of an open face, the tangential
+     * row of a slipping face in the active-set method) do not involve W: they only tie the
+     * face's own multiplier, E_f dl_f = e_f. They are eliminated before the LU: dl_f =
+     * E_f^+ e_f + N_f t_f with N_f a basis of the null space of E_f, and the dense LU is done on
+     * the remaining rows for t only (5.2.2 level 4, active set: 3,635 of 5,376 rows).
      */
     template <int dim>
     class MultiplierSchurComplement
@@ -92,7 +98,14 @@ namespace porofrac
       SparseCholesky                           K;
       FullMatrix<double>                       W; ///< J K^{-1} B^T
       std::vector<Tensor<2, dim>>              rows_l, rows_j;
-      LAPACKFullMatrix<double>                 S; ///< LU factors of the equilibrated A_l - A_j W
+      /// Per face: rows with a jump term (kept in the dense system) and without (eliminated),
+      /// E_f^+ (dim x free rows), the null-space basis N_f of E_f (dim x kept rows), and the
+      /// offset of the face's kept rows / reduced unknowns t_f in the dense system.
+      std::vector<std::vector<unsigned int>>   kept_rows, free_rows;
+      std::vector<FullMatrix<double>>          pseudo_inverse, null_basis;
+      std::vector<unsigned int>                offset;
+      /// LU factors of the equilibrated reduced Schur complement (A_l - A_j W) N on kept rows.
+      LAPACKFullMatrix<double>                 S;
       std::vector<double>                      row_scale;
       bool                                     factorized = false;
     };
