@@ -124,8 +124,12 @@ namespace porofrac
                   for (unsigned int r = 0; r < dim; ++r)
                     v(r) -= dot * null_basis[f](r, b);
                 }
+              // The columns of the orthogonal projector onto null(E_f) have squared norms
+              // summing to its rank, so while the basis is incomplete the leftover squared
+              // norms sum to >= 1 and (dim <= 3) a column with norm > 0.5 remains: that
+              // threshold always completes the basis and never normalizes round-off.
               const double norm = v.l2_norm();
-              if (norm > 1e-8)
+              if (norm > 0.5)
                 {
                   for (unsigned int r = 0; r < dim; ++r)
                     null_basis[f](r, found) = v(r) / norm;

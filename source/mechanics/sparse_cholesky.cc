@@ -259,7 +259,6 @@ namespace porofrac
             block_of(s)[(j - super[s]) + position(s, k) * n_columns] += value;
           }
 
-      data->Y.clear();
       std::vector<double> Gd(std::size_t(m) * m, 0.), update, gram;
       std::vector<std::ptrdiff_t> target_column;
       std::size_t                 nonzeros = 0;
