@@ -59,7 +59,7 @@ main(int argc, char **argv)
             }
           else if (a == "--print-parameters")
             {
-              const std::string style = (i + 1 < args.size()) ? args[i + 1] : "prm";
+              const std::string        style = (i + 1 < args.size()) ? args[i + 1] : "prm";
               dealii::ParameterHandler prm;
               app::declare_all_parameters(prm);
               if (style == "md")

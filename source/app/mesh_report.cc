@@ -14,9 +14,9 @@ namespace porofrac
     void
     report_mesh(const geometry::CutMesh<dim> &mesh, io::RunContext &context)
     {
-      const geometry::MeshQuality q   = geometry::assess_mesh(mesh);
-      std::ostream               &out = context.report;
-      const auto                  flags = out.flags();
+      const geometry::MeshQuality q         = geometry::assess_mesh(mesh);
+      std::ostream               &out       = context.report;
+      const auto                  flags     = out.flags();
       const auto                  precision = out.precision();
       out << std::scientific << std::setprecision(4);
       // Checks a user can trust at a glance: the cells tile the domain, and the two sides of every
@@ -27,8 +27,8 @@ namespace porofrac
       unsigned int n_matching = 0;
       for (const auto &f : mesh.fracture_faces)
         {
-          const auto plus  = f.cell[geometry::plus]->face(f.face_no[geometry::plus]);
-          const auto minus = f.cell[geometry::minus]->face(f.face_no[geometry::minus]);
+          const auto   plus  = f.cell[geometry::plus]->face(f.face_no[geometry::plus]);
+          const auto   minus = f.cell[geometry::minus]->face(f.face_no[geometry::minus]);
           const double tol = 1e-10 * std::sqrt(f.measure) * (dim == 3 ? 1. : std::sqrt(f.measure));
           n_matching += (f.cell[geometry::plus] != f.cell[geometry::minus]) &&
                         plus->center().distance(minus->center()) <= tol &&
@@ -38,8 +38,8 @@ namespace porofrac
       out << "Mesh:\n"
           << "  cells: " << q.n_cells << "\n"
           << "  vertices: " << q.n_vertices << " (" << mesh.n_uncut_vertices << " before cutting)\n"
-          << "  fracture faces: " << q.n_fracture_faces << ", with coincident sides in two cells: "
-          << n_matching << "\n"
+          << "  fracture faces: " << q.n_fracture_faces
+          << ", with coincident sides in two cells: " << n_matching << "\n"
           << "  measure of the cells: " << measure << "\n";
       io::Json fractures = io::Json::array();
       for (const unsigned int id : mesh.fracture_ids)
@@ -47,7 +47,7 @@ namespace porofrac
           const unsigned int n = mesh.faces_of_fracture.at(id).size();
           out << "  fracture " << id << ": " << n << " faces, measure " << mesh.fracture_measure(id)
               << "\n";
-          io::Json f = io::Json::object();
+          io::Json f   = io::Json::object();
           f["id"]      = id;
           f["faces"]   = n;
           f["measure"] = mesh.fracture_measure(id);
@@ -63,37 +63,36 @@ namespace porofrac
         }
       out << "  fracture nodes: " << n_tips << " tips, " << n_corners << " corners, "
           << n_intersections << " intersections, " << n_on_boundary << " on the boundary\n"
-          << std::fixed << std::setprecision(2)
-          << "  angles (degrees): min " << q.min_angle_degrees << ", max " << q.max_angle_degrees
-          << "\n"
+          << std::fixed << std::setprecision(2) << "  angles (degrees): min " << q.min_angle_degrees
+          << ", max " << q.max_angle_degrees << "\n"
           << "  TPFA connections: " << q.n_connections << ", non-orthogonal " << q.n_non_orthogonal
           << ", non-positive distance " << q.n_non_positive_distance << "\n"
           << "  circumcentres outside their cell: " << q.n_centres_outside
-          << ", boundary faces with non-positive distance: "
-          << q.n_boundary_non_positive_distance << "\n";
+          << ", boundary faces with non-positive distance: " << q.n_boundary_non_positive_distance
+          << "\n";
       out.flags(flags);
       out.precision(precision);
 
-      io::Json &m                   = context.summary["mesh"];
-      m["n_cells"]                  = q.n_cells;
-      m["n_vertices"]               = q.n_vertices;
-      m["n_vertices_before_cut"]    = mesh.n_uncut_vertices;
-      m["n_fracture_faces"]         = q.n_fracture_faces;
+      io::Json &m                                 = context.summary["mesh"];
+      m["n_cells"]                                = q.n_cells;
+      m["n_vertices"]                             = q.n_vertices;
+      m["n_vertices_before_cut"]                  = mesh.n_uncut_vertices;
+      m["n_fracture_faces"]                       = q.n_fracture_faces;
       m["n_fracture_faces_with_coincident_sides"] = n_matching;
-      m["measure"]                  = measure;
-      m["fractures"]                = fractures;
-      m["n_tips"]                   = n_tips;
-      m["n_corners"]                = n_corners;
-      m["n_intersections"]          = n_intersections;
-      m["n_fracture_nodes_on_boundary"] = n_on_boundary;
-      m["min_angle_degrees"]        = q.min_angle_degrees;
-      m["max_angle_degrees"]        = q.max_angle_degrees;
-      io::Json &a                   = m["tpfa_admissibility"];
-      a["n_connections"]            = q.n_connections;
-      a["n_non_orthogonal"]         = q.n_non_orthogonal;
-      a["n_non_positive_distance"]  = q.n_non_positive_distance;
-      a["n_inadmissible"]           = q.n_inadmissible();
-      a["n_circumcentres_outside_cell"] = q.n_centres_outside;
+      m["measure"]                                = measure;
+      m["fractures"]                              = fractures;
+      m["n_tips"]                                 = n_tips;
+      m["n_corners"]                              = n_corners;
+      m["n_intersections"]                        = n_intersections;
+      m["n_fracture_nodes_on_boundary"]           = n_on_boundary;
+      m["min_angle_degrees"]                      = q.min_angle_degrees;
+      m["max_angle_degrees"]                      = q.max_angle_degrees;
+      io::Json &a                                 = m["tpfa_admissibility"];
+      a["n_connections"]                          = q.n_connections;
+      a["n_non_orthogonal"]                       = q.n_non_orthogonal;
+      a["n_non_positive_distance"]                = q.n_non_positive_distance;
+      a["n_inadmissible"]                         = q.n_inadmissible();
+      a["n_circumcentres_outside_cell"]           = q.n_centres_outside;
       a["n_boundary_faces_non_positive_distance"] = q.n_boundary_non_positive_distance;
     }
 

@@ -14,8 +14,8 @@
 // MECHANICS HOOK (include)
 #include <porofrac/mechanics/scene.h>
 // FLOW HOOK (include)
-#include <porofrac/flow/scene.h>
 #include <porofrac/coupling/scene.h>
+#include <porofrac/flow/scene.h>
 
 #include <filesystem>
 #include <iostream>
@@ -32,7 +32,7 @@ namespace porofrac
               std::ostream             &report)
     {
       using namespace dealii;
-      Timer wall_clock;
+      Timer                       wall_clock;
       const std::filesystem::path deck(deck_path);
       const std::string           physics = prm.get("Physics");
       std::string                 scene   = prm.get("Scene name");
@@ -47,19 +47,26 @@ namespace porofrac
 
       std::error_code ec;
       std::filesystem::create_directories(output_directory, ec);
-      check_input(std::filesystem::is_directory(output_directory), "--output-dir",
+      check_input(std::filesystem::is_directory(output_directory),
+                  "--output-dir",
                   "cannot create the output directory '" + output_directory + "'");
 
       ConditionalOStream progress(std::cout, verbosity != "quiet");
       ConditionalOStream verbose(std::cout, verbosity == "verbose");
       TimerOutput        timer(progress, TimerOutput::never, TimerOutput::wall_times);
-      io::Json           summary = io::Json::object();
-      summary["scene"]           = scene;
-      summary["physics"]         = physics;
-      summary["dim"]             = dim;
+      io::Json           summary  = io::Json::object();
+      summary["scene"]            = scene;
+      summary["physics"]          = physics;
+      summary["dim"]              = dim;
       summary["porofrac_version"] = version;
-      io::RunContext context{deck.filename().string(), output_directory, report, progress, verbose,
-                             timer, summary, format};
+      io::RunContext context{deck.filename().string(),
+                             output_directory,
+                             report,
+                             progress,
+                             verbose,
+                             timer,
+                             summary,
+                             format};
 
       geometry::GeometryParameters geometry_parameters;
       geometry_parameters.parse_parameters(prm, deck.parent_path().string());
@@ -70,10 +77,10 @@ namespace porofrac
         mesh = geometry::make_cut_mesh<dim>(geometry_parameters);
       }
       report_mesh(*mesh, context);
-      summary["n_cells"]            = mesh->triangulation.n_active_cells();
-      summary["n_fracture_faces"]   = static_cast<unsigned int>(mesh->fracture_faces.size());
-      summary["n_dofs_mechanics"]   = 0;
-      summary["n_unknowns_flow"]    = 0;
+      summary["n_cells"]          = mesh->triangulation.n_active_cells();
+      summary["n_fracture_faces"] = static_cast<unsigned int>(mesh->fracture_faces.size());
+      summary["n_dofs_mechanics"] = 0;
+      summary["n_unknowns_flow"]  = 0;
       {
         TimerOutput::Scope t(timer, "Output: mesh");
         geometry::write_mesh(*mesh, context.path("mesh"), format);
@@ -92,7 +99,7 @@ namespace porofrac
       else if (physics == "poromechanics")
         coupling::run_scene<dim>(prm, *mesh, context);
 
-      summary["wall_time_s"]    = wall_clock.wall_time();
+      summary["wall_time_s"] = wall_clock.wall_time();
       Utilities::System::MemoryStats memory;
       Utilities::System::get_memory_stats(memory);
       summary["peak_memory_mb"] = memory.VmHWM / 1024.;
@@ -105,10 +112,14 @@ namespace porofrac
 
 
     template void
-    run_scene<2>(dealii::ParameterHandler &, const std::string &, const std::string &,
+    run_scene<2>(dealii::ParameterHandler &,
+                 const std::string &,
+                 const std::string &,
                  std::ostream &);
     template void
-    run_scene<3>(dealii::ParameterHandler &, const std::string &, const std::string &,
+    run_scene<3>(dealii::ParameterHandler &,
+                 const std::string &,
+                 const std::string &,
                  std::ostream &);
   } // namespace app
 } // namespace porofrac

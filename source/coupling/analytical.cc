@@ -10,12 +10,15 @@ namespace porofrac
   namespace coupling
   {
     double
-    Terzaghi::coefficient(const double permeability, const double viscosity,
-                          const double young_modulus, const double poisson_ratio, const double biot,
+    Terzaghi::coefficient(const double permeability,
+                          const double viscosity,
+                          const double young_modulus,
+                          const double poisson_ratio,
+                          const double biot,
                           const double biot_modulus)
     {
-      const double lambda = young_modulus * poisson_ratio /
-                            ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+      const double lambda =
+        young_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
       const double mu = young_modulus / (2 * (1 + poisson_ratio));
       return permeability / viscosity / (biot * biot / (lambda + 2 * mu) + 1. / biot_modulus);
     }

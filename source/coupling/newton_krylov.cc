@@ -18,22 +18,37 @@ namespace porofrac
     FixedPointParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Coupling");
-      prm.declare_entry("Method", "newton-krylov", Patterns::Selection("newton-krylov|anderson|fixed point"),
+      prm.declare_entry("Method",
+                        "newton-krylov",
+                        Patterns::Selection("newton-krylov|anderson|fixed point"),
                         "How each time step's fixed point is solved: Jacobian-free Newton-Krylov "
                         "acceleration (paper, Section 5), Anderson acceleration (one map "
                         "evaluation per iteration), or plain fixed-point iterations.");
-      prm.declare_entry("Anderson depth", "5", Patterns::Integer(1),
+      prm.declare_entry("Anderson depth",
+                        "5",
+                        Patterns::Integer(1),
                         "Anderson: number of previous residual differences in the least-squares "
                         "mixing.");
-      prm.declare_entry("Tolerance", "1e-6", Patterns::Double(0),
+      prm.declare_entry("Tolerance",
+                        "1e-6",
+                        Patterns::Double(0),
                         "Stop at this relative increment or relative residual (paper: 1e-6).");
-      prm.declare_entry("Max iterations", "30", Patterns::Integer(1),
+      prm.declare_entry("Max iterations",
+                        "30",
+                        Patterns::Integer(1),
                         "Newton (or fixed-point) iterations before the time step is cut.");
-      prm.declare_entry("GMRES restart", "30", Patterns::Integer(1),
+      prm.declare_entry("GMRES restart",
+                        "30",
+                        Patterns::Integer(1),
                         "Krylov space size of GMRES in each Newton step.");
-      prm.declare_entry("Max GMRES iterations", "30", Patterns::Integer(1),
-                        "GMRES iterations per Newton step (each costs one coupled map evaluation).");
-      prm.declare_entry("Forcing term max", "0.1", Patterns::Double(0, 1),
+      prm.declare_entry(
+        "Max GMRES iterations",
+        "30",
+        Patterns::Integer(1),
+        "GMRES iterations per Newton step (each costs one coupled map evaluation).");
+      prm.declare_entry("Forcing term max",
+                        "0.1",
+                        Patterns::Double(0, 1),
                         "Upper bound of the Eisenstat-Walker relative GMRES tolerance.");
       prm.leave_subsection();
     }
@@ -63,8 +78,11 @@ namespace porofrac
       /// the plain or Anderson iteration stops: relative increment r/|x_k| or relative residual
       /// r/r0 below the tolerance.
       bool
-      record_and_test(FixedPointResult &result, const double r, double &r0, const double x_norm,
-                      const double tolerance)
+      record_and_test(FixedPointResult &result,
+                      const double      r,
+                      double           &r0,
+                      const double      x_norm,
+                      const double      tolerance)
       {
         if (result.iterations == 1)
           r0 = r;
@@ -79,8 +97,9 @@ namespace porofrac
 
 
     FixedPointSolver::FixedPointSolver(const FixedPointParameters &parameters)
-      : parameters(parameters)
-    {}
+        : parameters(parameters)
+    {
+    }
 
 
 
@@ -134,9 +153,9 @@ namespace porofrac
                   dG.erase(dG.begin());
                 }
             }
-          f_prev = f;
-          g_prev = gx;
-          x      = gx;
+          f_prev               = f;
+          g_prev               = gx;
+          x                    = gx;
           const unsigned int m = dF.size();
           if (m == 0)
             continue;
@@ -177,7 +196,8 @@ namespace porofrac
           g(x, gx);
           ++result.map_evaluations;
           gx -= x; // now g(x) - x = -R(x) = the increment
-          const bool done = record_and_test(result, gx.l2_norm(), r0, x.l2_norm(), parameters.tolerance);
+          const bool done =
+            record_and_test(result, gx.l2_norm(), r0, x.l2_norm(), parameters.tolerance);
           x += gx;
           if (done)
             {
@@ -204,13 +224,14 @@ namespace porofrac
                                  const Vector<double>        &x,
                                  const Vector<double>        &gx,
                                  unsigned int                &evaluations)
-          : g(g)
-          , x(x)
-          , gx(gx)
-          , evaluations(evaluations)
-          , shifted(x.size())
-          , g_shifted(x.size())
-        {}
+            : g(g)
+            , x(x)
+            , gx(gx)
+            , evaluations(evaluations)
+            , shifted(x.size())
+            , g_shifted(x.size())
+        {
+        }
 
         void
         vmult(Vector<double> &dst, const Vector<double> &v) const
@@ -221,8 +242,8 @@ namespace porofrac
               dst = 0;
               return;
             }
-          const double eps = std::sqrt(std::numeric_limits<double>::epsilon()) *
-                             (1 + x.l2_norm()) / v_norm;
+          const double eps =
+            std::sqrt(std::numeric_limits<double>::epsilon()) * (1 + x.l2_norm()) / v_norm;
           shifted = x;
           shifted.add(eps, v);
           g(shifted, g_shifted);
@@ -271,17 +292,20 @@ namespace porofrac
           // Eisenstat-Walker choice 2 with the usual safeguard.
           if (result.iterations > 0)
             {
-              const double eta_new = parameters.ew_gamma * std::pow(r / r_previous, parameters.ew_alpha);
-              const double floor   = parameters.ew_gamma * std::pow(eta, parameters.ew_alpha);
+              const double eta_new =
+                parameters.ew_gamma * std::pow(r / r_previous, parameters.ew_alpha);
+              const double floor = parameters.ew_gamma * std::pow(eta, parameters.ew_alpha);
               eta = std::min(parameters.eta_max, floor > 0.1 ? std::max(eta_new, floor) : eta_new);
             }
           r_previous = r;
 
-          FiniteDifferenceOperator op(g, x, gx, result.map_evaluations);
-          SolverControl            control(parameters.max_gmres_iterations,
-                                std::max(eta * r, 1e-300), false, false);
+          FiniteDifferenceOperator                    op(g, x, gx, result.map_evaluations);
+          SolverControl                               control(parameters.max_gmres_iterations,
+                                std::max(eta * r, 1e-300),
+                                false,
+                                false);
           SolverGMRES<Vector<double>>::AdditionalData data(parameters.gmres_restart + 2);
-          SolverGMRES<Vector<double>> gmres(control, data);
+          SolverGMRES<Vector<double>>                 gmres(control, data);
           dx = 0;
           try
             {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
-#include <porofrac/io/text.h>
 #include <porofrac/coupling/poromechanics.h>
 #include <porofrac/flow/laws.h>
+#include <porofrac/io/text.h>
 
 #include <cmath>
 
@@ -16,15 +16,16 @@ namespace porofrac
                                       const CouplingParameters       &parameters,
                                       ConditionalOStream             &verbose,
                                       TimerOutput                    &timer)
-      : mechanics(mechanics)
-      , flow(flow)
-      , parameters(parameters)
-      , verbose(verbose)
-      , timer(timer)
-      , n_matrix(flow.grid->n_matrix_cells)
-      , n_fracture(flow.grid->n_fracture_cells)
+        : mechanics(mechanics)
+        , flow(flow)
+        , parameters(parameters)
+        , verbose(verbose)
+        , timer(timer)
+        , n_matrix(flow.grid->n_matrix_cells)
+        , n_fracture(flow.grid->n_fracture_cells)
     {
-      check_input(n_fracture == mechanics.get_mesh().fracture_faces.size(), "Coupling",
+      check_input(n_fracture == mechanics.get_mesh().fracture_faces.size(),
+                  "Coupling",
                   "the flow and mechanics meshes do not share their fracture faces");
     }
 
@@ -42,7 +43,8 @@ namespace porofrac
       solver.set_biot_storage(std::vector<double>(n_matrix, flow.initial_porosity),
                               std::vector<double>(p_E_initial.begin(),
                                                   p_E_initial.begin() + n_matrix),
-                              1. / parameters.biot_modulus, parameters.capillary_energy);
+                              1. / parameters.biot_modulus,
+                              parameters.capillary_energy);
       // (u^0, lambda^0): the contact problem without time variable for p_E^0, from the deck's
       // initial guess (paper: open at the first step).
       solve_mechanics(p_E_initial);
@@ -191,15 +193,15 @@ namespace porofrac
     CoupledStepReport
     Poromechanics<dim>::solve_time_step(const double time_step)
     {
-      dt     = time_step;
-      report = CoupledStepReport();
+      dt           = time_step;
+      report       = CoupledStepReport();
       auto &solver = *flow.solver;
       auto &grid   = *flow.grid;
       // Kozeny-Carman, explicit in time: the permeability of the previous step's porosity.
       if (parameters.kozeny_carman)
         for (unsigned int K = 0; K < n_matrix; ++K)
-          grid.permeability[K] = flow::kozeny_carman(flow.initial_permeability,
-                                                     flow.initial_porosity, grid.porosity[K]);
+          grid.permeability[K] =
+            flow::kozeny_carman(flow.initial_permeability, flow.initial_porosity, grid.porosity[K]);
       solver.begin_time_step();
       flow_guess = solver.old_state;
       {
@@ -216,8 +218,9 @@ namespace porofrac
           if (parameters.variable == CouplingVariable::equivalent_pressure)
             {
               Vector<double> x = initial_guess(p_E_old, p_E_older);
-              result = fixed_point.solve(
-                [this](const Vector<double> &x, Vector<double> &gx) { map_pressure(x, gx); }, x);
+              result           = fixed_point.solve([this](const Vector<double> &x,
+                                                Vector<double>       &gx) { map_pressure(x, gx); },
+                                         x);
               // Leave every field consistent with one evaluation at the solution.
               if (!result.evaluated_at_solution)
                 {
@@ -229,9 +232,9 @@ namespace porofrac
           else
             {
               Vector<double> y = initial_guess(y_old, y_older);
-              result = fixed_point.solve(
-                [this](const Vector<double> &y, Vector<double> &gy) { map_displacement(y, gy); },
-                y);
+              result           = fixed_point.solve([this](const Vector<double> &y,
+                                                Vector<double> &gy) { map_displacement(y, gy); },
+                                         y);
               if (!result.evaluated_at_solution)
                 {
                   Vector<double> gy(y.size());
@@ -269,7 +272,8 @@ namespace porofrac
               set_flow_inputs(y_old);
             }
           catch (const SolverFailure &)
-            {}
+            {
+            }
         }
       return report;
     }
@@ -290,7 +294,7 @@ namespace porofrac
       dt_old    = dt;
       p_E_old   = p_E;
       y_old     = displacement_measures();
-      u_old   = mechanics.displacement();
+      u_old     = mechanics.displacement();
       for (unsigned int f = 0; f < n_fracture; ++f)
         jump_old[f] = mechanics.jump(f);
     }
@@ -316,8 +320,8 @@ namespace porofrac
         {
           const unsigned int i  = n_matrix + f;
           const double       pc = solver.state[i][1] - solver.state[i][0];
-          e.capillary_fracture += grid.pore_volume(i) *
-                                  flow.rocks[flow::fracture_rock].saturation.energy(pc);
+          e.capillary_fracture +=
+            grid.pore_volume(i) * flow.rocks[flow::fracture_rock].saturation.energy(pc);
         }
       e.elastic = mechanics.elastic_energy();
       return e;
@@ -335,8 +339,8 @@ namespace porofrac
       step_supplied_work  = balance.boundary_work + mechanics.external_work(u_old);
       step_friction_work  = 0;
       for (unsigned int f = 0; f < n_fracture; ++f)
-        step_friction_work += mechanics.multiplier(f) * (mechanics.jump(f) - jump_old[f]) *
-                              mechanics.face_measure(f);
+        step_friction_work +=
+          mechanics.multiplier(f) * (mechanics.jump(f) - jump_old[f]) * mechanics.face_measure(f);
     }
 
 

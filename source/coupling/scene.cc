@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/utilities.h>
+
 #include <deal.II/numerics/data_out.h>
 
 #include <porofrac/base/exceptions.h>
-#include <porofrac/io/text.h>
 #include <porofrac/coupling/analytical.h>
 #include <porofrac/coupling/poromechanics.h>
 #include <porofrac/coupling/scene.h>
 #include <porofrac/flow/model.h>
 #include <porofrac/geometry/mesh_output.h>
+#include <porofrac/io/text.h>
 #include <porofrac/mechanics/fracture_table.h>
 #include <porofrac/mechanics/scene.h>
 
@@ -28,10 +29,14 @@ namespace porofrac
     {
       CouplingParameters::declare_parameters(prm);
       prm.enter_subsection("Coupling");
-      prm.declare_entry("Fracture output times", "", Patterns::Anything(),
+      prm.declare_entry("Fracture output times",
+                        "",
+                        Patterns::Anything(),
                         "Comma-separated times (s) after which fractures.csv rows are written "
                         "(at the first step reaching each); t = 0 and the final time always are.");
-      prm.declare_entry("Analytical solution", "none", Patterns::Selection("none|terzaghi"),
+      prm.declare_entry("Analytical solution",
+                        "none",
+                        Patterns::Selection("none|terzaghi"),
                         "terzaghi: at the final time, the relative L2 error of the matrix wetting "
                         "pressure against Terzaghi's consolidation of a laterally confined column, "
                         "drained at the top (largest y) through a Dirichlet condition and loaded "
@@ -55,27 +60,29 @@ namespace porofrac
 
       template <int dim>
       void
-      report_states(std::ostream &out, const mechanics::ContactProblem<dim> &problem,
-                    const std::string &when)
+      report_states(std::ostream                         &out,
+                    const mechanics::ContactProblem<dim> &problem,
+                    const std::string                    &when)
       {
         for (const unsigned int fid : problem.get_mesh().fracture_ids)
           {
             const auto c = count_states(problem, fid);
-            out << "Coupling: " << when << ", fracture " << fid << ": open " << c[0]
-                << ", stick " << c[1] << ", slip " << c[2] << std::endl;
+            out << "Coupling: " << when << ", fracture " << fid << ": open " << c[0] << ", stick "
+                << c[1] << ", slip " << c[2] << std::endl;
           }
       }
 
       template <int dim>
       void
-      write_fields(const Poromechanics<dim> &pm, const std::string &basename,
-                   const std::string &format)
+      write_fields(const Poromechanics<dim> &pm,
+                   const std::string        &basename,
+                   const std::string        &format)
       {
-        const auto         &grid   = *pm.flow.grid;
-        const auto         &solver = *pm.flow.solver;
-        const auto         &mesh   = pm.mechanics.get_mesh();
-        const unsigned int  n      = grid.n_matrix_cells;
-        Vector<double>      pw(n), pnw(n), snw(n), pE(n), phi(n);
+        const auto        &grid   = *pm.flow.grid;
+        const auto        &solver = *pm.flow.solver;
+        const auto        &mesh   = pm.mechanics.get_mesh();
+        const unsigned int n      = grid.n_matrix_cells;
+        Vector<double>     pw(n), pnw(n), snw(n), pE(n), phi(n);
         for (unsigned int K = 0; K < n; ++K)
           {
             pw[K]  = solver.pressure(solver.state, K, 0);
@@ -84,12 +91,20 @@ namespace porofrac
             pE[K]  = pm.equivalent_pressure()[K];
             phi[K] = grid.porosity[K];
           }
-        geometry::write_cell_fields(mesh, basename, format,
-                                    {{"p_w", pw}, {"p_nw", pnw}, {"s_nw", snw}, {"p_E", pE},
-                                     {"porosity", phi}});
-        geometry::FractureFields fields = {{"p_w", {}},      {"p_nw", {}},     {"s_nw", {}},
-                                           {"p_E", {}},      {"aperture", {}}, {"jump_n", {}},
-                                           {"jump_t", {}},   {"lambda_n", {}}, {"state", {}}};
+        geometry::write_cell_fields(
+          mesh,
+          basename,
+          format,
+          {{"p_w", pw}, {"p_nw", pnw}, {"s_nw", snw}, {"p_E", pE}, {"porosity", phi}});
+        geometry::FractureFields fields = {{"p_w", {}},
+                                           {"p_nw", {}},
+                                           {"s_nw", {}},
+                                           {"p_E", {}},
+                                           {"aperture", {}},
+                                           {"jump_n", {}},
+                                           {"jump_t", {}},
+                                           {"lambda_n", {}},
+                                           {"state", {}}};
         for (unsigned int f = 0; f < grid.n_fracture_cells; ++f)
           {
             const unsigned int   i = n + f;
@@ -115,7 +130,8 @@ namespace porofrac
           dim, DataComponentInterpretation::component_is_part_of_vector);
         data_out.add_data_vector(pm.mechanics.displacement(),
                                  std::vector<std::string>(dim, "displacement"),
-                                 DataOut<dim>::type_dof_data, interp);
+                                 DataOut<dim>::type_dof_data,
+                                 interp);
         data_out.build_patches(mesh.mapping(), 2);
         geometry::write_data_out(data_out, basename + "_displacement." + format, format);
       }
@@ -123,12 +139,12 @@ namespace porofrac
       /// Relative L2 error (cell-measure weighted) of the matrix wetting pressure at time t.
       template <int dim>
       void
-      report_terzaghi_error(const ParameterHandler                  &prm,
-                            const Poromechanics<dim>                &pm,
-                            const mechanics::ContactParameters      &mp,
-                            const CouplingParameters                &cp,
-                            const double                             t,
-                            io::RunContext                          &context)
+      report_terzaghi_error(const ParameterHandler             &prm,
+                            const Poromechanics<dim>           &pm,
+                            const mechanics::ContactParameters &mp,
+                            const CouplingParameters           &cp,
+                            const double                        t,
+                            io::RunContext                     &context)
       {
         const auto &grid   = *pm.flow.grid;
         const auto &solver = *pm.flow.solver;
@@ -140,15 +156,17 @@ namespace porofrac
             y_max = std::max(y_max, v[1]);
           }
         Terzaghi exact;
-        exact.height           = y_max - y_min;
-        exact.initial_pressure = Utilities::string_to_double(
-          prm.get({"Flow", "Matrix"}, "Initial pressure w"));
-        exact.drained_pressure = solver.matrix_dirichlet.empty() ?
-                                   0. :
-                                   solver.matrix_dirichlet.begin()->second[0];
-        exact.consolidation    = Terzaghi::coefficient(
-          pm.flow.initial_permeability, pm.flow.rocks[0].viscosity[0], mp.young_modulus,
-          mp.poisson_ratio, cp.biot_coefficient, cp.biot_modulus);
+        exact.height = y_max - y_min;
+        exact.initial_pressure =
+          Utilities::string_to_double(prm.get({"Flow", "Matrix"}, "Initial pressure w"));
+        exact.drained_pressure =
+          solver.matrix_dirichlet.empty() ? 0. : solver.matrix_dirichlet.begin()->second[0];
+        exact.consolidation = Terzaghi::coefficient(pm.flow.initial_permeability,
+                                                    pm.flow.rocks[0].viscosity[0],
+                                                    mp.young_modulus,
+                                                    mp.poisson_ratio,
+                                                    cp.biot_coefficient,
+                                                    cp.biot_modulus);
         double e2 = 0, n2 = 0;
         for (unsigned int K = 0; K < grid.n_matrix_cells; ++K)
           {
@@ -163,8 +181,8 @@ namespace porofrac
                        << exact.consolidation * t / (exact.height * exact.height)
                        << ", relative L2 error of the excess pressure " << std::scientific
                        << std::setprecision(3) << error << std::defaultfloat << std::endl;
-        io::Json e = io::Json::object();
-        e["pressure_rel_l2"]  = error;
+        io::Json e                = io::Json::object();
+        e["pressure_rel_l2"]      = error;
         context.summary["errors"] = e;
       }
     } // namespace
@@ -196,37 +214,43 @@ namespace porofrac
 
       // Inside coupled iterations the flow Newton must be converged tightly (see
       // CouplingParameters); the deck's tolerances are the upper bounds.
-      flow::FlowModel<dim> flow = flow::make_flow_model<dim>(prm, mesh, [&](flow::NewtonParameters &n) {
-        // At its noise floor (kinks of S and of the upwinding), accept an inner solve that meets
-        // the flow deck's own tolerances instead of cutting the step.
-        n.stagnation_update_tolerance = n.update_tolerance;
-        n.stagnation_mass_tolerance   = 1e-10; // the per-step conservation target
+      flow::FlowModel<dim> flow =
+        flow::make_flow_model<dim>(prm, mesh, [&](flow::NewtonParameters &n) {
+          // At its noise floor (kinks of S and of the upwinding), accept an inner solve that meets
+          // the flow deck's own tolerances instead of cutting the step.
+          n.stagnation_update_tolerance = n.update_tolerance;
+          n.stagnation_mass_tolerance   = 1e-10; // the per-step conservation target
 
-        n.residual_tolerance = std::min(n.residual_tolerance, parameters.inner_flow_residual_tolerance);
-        n.update_tolerance   = std::min(n.update_tolerance, parameters.inner_flow_update_tolerance);
-      });
+          n.residual_tolerance =
+            std::min(n.residual_tolerance, parameters.inner_flow_residual_tolerance);
+          n.update_tolerance = std::min(n.update_tolerance, parameters.inner_flow_update_tolerance);
+        });
       const flow::TimeStepping &stepping = flow.stepping;
-      double       t_reachable = 0, dt_probe = std::min(stepping.initial_step, stepping.maximum_step);
+      double t_reachable = 0, dt_probe = std::min(stepping.initial_step, stepping.maximum_step);
       // A configuration that cannot reach the final time in a sane number of steps is bad input.
       for (unsigned int k = 0; k < 1000000 && t_reachable < stepping.final_time; ++k)
         {
           t_reachable += dt_probe;
           dt_probe = std::min(stepping.growth * dt_probe, stepping.maximum_step);
         }
-      check_input(t_reachable >= stepping.final_time, "Flow/Maximum time step",
-                  "the final time " + io::to_text(stepping.final_time) +
-                    " s is not reached in 10^6 steps with this initial step, growth and maximum step");
+      check_input(
+        t_reachable >= stepping.final_time,
+        "Flow/Maximum time step",
+        "the final time " + io::to_text(stepping.final_time) +
+          " s is not reached in 10^6 steps with this initial step, growth and maximum step");
 
       context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
-      mechanics::ContactProblem<dim> mech(mesh, mechanics_parameters, context.verbose,
+      mechanics::ContactProblem<dim> mech(mesh,
+                                          mechanics_parameters,
+                                          context.verbose,
                                           context.timer);
       mech.setup();
       context.summary["n_dofs_mechanics"] = mech.n_dofs();
       context.summary["n_unknowns_flow"]  = flow.solver->n_unknowns();
       context.report << "Coupling: " << mech.n_dofs() << " mechanics dofs, "
-                     << flow.solver->n_unknowns() << " flow unknowns, "
-                     << flow.grid->n_matrix_cells << " matrix cells, "
-                     << flow.grid->n_fracture_cells << " fracture cells" << std::endl;
+                     << flow.solver->n_unknowns() << " flow unknowns, " << flow.grid->n_matrix_cells
+                     << " matrix cells, " << flow.grid->n_fracture_cells << " fracture cells"
+                     << std::endl;
 
       Poromechanics<dim> pm(mech, flow, parameters, context.verbose, context.timer);
       context.progress << "*** Poromechanics: initial state" << std::endl;
@@ -252,7 +276,7 @@ namespace porofrac
                  "friction_work,supplied_work,energy_inequality_violation\n"
               << std::setprecision(10);
 
-      const bool write = context.output_format != "none";
+      const bool                                  write = context.output_format != "none";
       std::vector<std::pair<double, std::string>> pvd_entries;
       const auto output = [&](const unsigned int step, const double time) {
         if (!write)
@@ -275,7 +299,7 @@ namespace porofrac
       unsigned int step = 0, next_output = 0, total_cuts = 0;
       unsigned int total_flow = 0, total_mechanics = 0, total_coupling = 0, total_maps = 0,
                    total_gmres = 0, max_coupling = 0;
-      double       mass_error_max = 0, violation_max = 0;
+      double mass_error_max = 0, violation_max = 0;
       while (next_output < output_times.size() && output_times[next_output] <= 0)
         ++next_output;
       const double T = stepping.final_time;
@@ -314,17 +338,15 @@ namespace porofrac
           max_coupling = std::max(max_coupling, r.coupling_iterations);
 
           // Energy estimate (19), discrete form of one step (see EnergyTerms).
-          const EnergyTerms energy     = pm.energy();
-          const double      change     = energy.total() - energy_old.total();
-          const double      lhs        = change + pm.last_step_dissipation() +
-                                          pm.last_step_friction_work();
-          const double      supplied   = pm.last_step_supplied_work();
-          const double      scale      = std::abs(change) + pm.last_step_dissipation() +
-                                          std::abs(pm.last_step_friction_work()) +
-                                          std::abs(supplied);
-          const double      violation  = scale > 0 ? std::max(0., lhs - supplied) / scale : 0.;
-          violation_max                = std::max(violation_max, violation);
-          energy_old                   = energy;
+          const EnergyTerms energy = pm.energy();
+          const double      change = energy.total() - energy_old.total();
+          const double lhs = change + pm.last_step_dissipation() + pm.last_step_friction_work();
+          const double supplied = pm.last_step_supplied_work();
+          const double scale    = std::abs(change) + pm.last_step_dissipation() +
+                               std::abs(pm.last_step_friction_work()) + std::abs(supplied);
+          const double violation  = scale > 0 ? std::max(0., lhs - supplied) / scale : 0.;
+          violation_max           = std::max(violation_max, violation);
+          energy_old              = energy;
           const double mass_error = std::max(r.mass_defect[0], r.mass_defect[1]);
           mass_error_max          = std::max(mass_error_max, mass_error);
           pm.accept_time_step();
@@ -333,20 +355,19 @@ namespace porofrac
           history << t << ',' << dt_step << ',' << pm.mean_fracture_width() << ','
                   << r.flow_newton_iterations << ',' << r.mechanics_iterations << ','
                   << r.coupling_iterations << ',' << cuts << ',' << mass_error << ','
-                  << r.map_evaluations << ',' << r.gmres_iterations << ',' << c[0] << ','
-                  << c[1] << ',' << c[2] << ',' << energy.capillary_matrix << ','
-                  << energy.capillary_fracture << ',' << energy.elastic << ','
-                  << energy.storage << ',' << pm.last_step_dissipation() << ','
-                  << pm.last_step_friction_work() << ',' << supplied << ',' << violation
-                  << std::endl;
-          context.progress << "  Step " << step << ": t = " << t / 3.15576e7 << " y, dt = "
-                           << dt_step << " s, " << r.coupling_iterations << " coupling, "
-                           << r.flow_newton_iterations << " flow, " << r.mechanics_iterations
-                           << " mechanics iterations; mean width " << pm.mean_fracture_width()
-                           << " m; open/stick/slip " << c[0] << '/' << c[1] << '/' << c[2]
-                           << std::endl;
+                  << r.map_evaluations << ',' << r.gmres_iterations << ',' << c[0] << ',' << c[1]
+                  << ',' << c[2] << ',' << energy.capillary_matrix << ','
+                  << energy.capillary_fracture << ',' << energy.elastic << ',' << energy.storage
+                  << ',' << pm.last_step_dissipation() << ',' << pm.last_step_friction_work() << ','
+                  << supplied << ',' << violation << std::endl;
+          context.progress << "  Step " << step << ": t = " << t / 3.15576e7
+                           << " y, dt = " << dt_step << " s, " << r.coupling_iterations
+                           << " coupling, " << r.flow_newton_iterations << " flow, "
+                           << r.mechanics_iterations << " mechanics iterations; mean width "
+                           << pm.mean_fracture_width() << " m; open/stick/slip " << c[0] << '/'
+                           << c[1] << '/' << c[2] << std::endl;
 
-          const bool done = t >= T * (1 - 1e-12);
+          const bool done  = t >= T * (1 - 1e-12);
           bool       table = done;
           while (next_output < output_times.size() && output_times[next_output] <= t * (1 + 1e-12))
             {
@@ -378,34 +399,34 @@ namespace porofrac
       if (prm.get({"Coupling"}, "Analytical solution") == "terzaghi")
         report_terzaghi_error(prm, pm, mechanics_parameters, parameters, t, context);
 
-      io::Json m = io::Json::object();
-      m["solver"]               = prm.get({"Mechanics"}, "Solver");
-      m["c"]                    = mechanics_parameters.c;
-      m["nonlinear_iterations"] = total_mechanics;
+      io::Json m                    = io::Json::object();
+      m["solver"]                   = prm.get({"Mechanics"}, "Solver");
+      m["c"]                        = mechanics_parameters.c;
+      m["nonlinear_iterations"]     = total_mechanics;
       m["initial_state_iterations"] = initial_mechanics_iterations;
       // LU factorizations of the contact system (reused while no face row changes).
-      m["lu_factorizations"]    = mech.n_factorizations;
-      m["converged"]            = true;
-      const auto c              = count_states(mech, -1);
-      m["n_open"]               = c[0];
-      m["n_stick"]              = c[1];
-      m["n_slip"]               = c[2];
-      context.summary["mechanics"] = m;
-      io::Json cpl = io::Json::object();
-      cpl["fixed_point"]       = prm.get({"Coupling"}, "Fixed point");
-      cpl["method"]            = parameters.fixed_point.method;
-      cpl["iterations"]        = total_coupling;
-      cpl["iterations_max_per_step"] = max_coupling;
-      cpl["map_evaluations"]   = total_maps;
-      cpl["gmres_iterations"]  = total_gmres;
-      context.summary["coupling"]               = cpl;
-      context.summary["n_time_steps"]           = step;
-      context.summary["final_time"]             = t;
-      context.summary["time_step_cuts"]         = total_cuts;
-      context.summary["flow_newton_iterations"] = total_flow;
-      context.summary["mass_balance_error_max"] = mass_error_max;
+      m["lu_factorizations"]                             = mech.n_factorizations;
+      m["converged"]                                     = true;
+      const auto c                                       = count_states(mech, -1);
+      m["n_open"]                                        = c[0];
+      m["n_stick"]                                       = c[1];
+      m["n_slip"]                                        = c[2];
+      context.summary["mechanics"]                       = m;
+      io::Json cpl                                       = io::Json::object();
+      cpl["fixed_point"]                                 = prm.get({"Coupling"}, "Fixed point");
+      cpl["method"]                                      = parameters.fixed_point.method;
+      cpl["iterations"]                                  = total_coupling;
+      cpl["iterations_max_per_step"]                     = max_coupling;
+      cpl["map_evaluations"]                             = total_maps;
+      cpl["gmres_iterations"]                            = total_gmres;
+      context.summary["coupling"]                        = cpl;
+      context.summary["n_time_steps"]                    = step;
+      context.summary["final_time"]                      = t;
+      context.summary["time_step_cuts"]                  = total_cuts;
+      context.summary["flow_newton_iterations"]          = total_flow;
+      context.summary["mass_balance_error_max"]          = mass_error_max;
       context.summary["energy_inequality_violation_max"] = violation_max;
-      context.summary["mean_fracture_width"]    = pm.mean_fracture_width();
+      context.summary["mean_fracture_width"]             = pm.mean_fracture_width();
     }
 
     template void

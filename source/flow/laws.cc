@@ -25,7 +25,8 @@ namespace porofrac
     SaturationLaw
     SaturationLaw::corey(const double R, const std::string &parameter)
     {
-      check_input(R > 0 && std::isfinite(R), parameter,
+      check_input(R > 0 && std::isfinite(R),
+                  parameter,
                   "the Corey capillary pressure scale R must be positive, got " + str(R));
       SaturationLaw law;
       law.type = Type::corey;
@@ -36,9 +37,11 @@ namespace porofrac
     SaturationLaw
     SaturationLaw::van_genuchten(const double P_r, const double n, const std::string &parameter)
     {
-      check_input(P_r > 0 && std::isfinite(P_r), parameter,
+      check_input(P_r > 0 && std::isfinite(P_r),
+                  parameter,
                   "the van Genuchten pressure scale P_r must be positive, got " + str(P_r));
-      check_input(n > 1 && std::isfinite(n), parameter,
+      check_input(n > 1 && std::isfinite(n),
+                  parameter,
                   "the van Genuchten exponent n must be > 1, got " + str(n));
       SaturationLaw law;
       law.type = Type::van_genuchten;
@@ -86,10 +89,13 @@ namespace porofrac
         }
       // U = p_c S(p_c) - int_0^{p_c} S; composite 5-point Gauss-Legendre on a graded partition
       // (S'(q) ~ q^(n-1) near 0 is smooth for n > 1).
-      static const double xg[5] = {-0.9061798459386640, -0.5384693101056831, 0.,
-                                   0.5384693101056831, 0.9061798459386640};
-      static const double wg[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                   0.4786286704993665, 0.2369268850561891};
+      static const double xg[5] = {
+        -0.9061798459386640, -0.5384693101056831, 0., 0.5384693101056831, 0.9061798459386640};
+      static const double wg[5]       = {0.2369268850561891,
+                                         0.4786286704993665,
+                                         0.5688888888888889,
+                                         0.4786286704993665,
+                                         0.2369268850561891};
       const unsigned int  n_intervals = 200;
       double              integral    = 0;
       for (unsigned int k = 0; k < n_intervals; ++k)
@@ -104,9 +110,11 @@ namespace porofrac
     double
     SaturationLaw::inverse(const double s, const std::string &parameter) const
     {
-      check_input(s >= 0 && s < 1, parameter,
-                  "a non-wetting saturation must lie in [0, 1) to define a capillary pressure, got " +
-                    str(s));
+      check_input(
+        s >= 0 && s < 1,
+        parameter,
+        "a non-wetting saturation must lie in [0, 1) to define a capillary pressure, got " +
+          str(s));
       if (s == 0)
         return 0.;
       if (type == Type::corey)
@@ -122,14 +130,20 @@ namespace porofrac
     }
 
     RelativePermeability
-    RelativePermeability::van_genuchten_mualem(const double q, const double S_lr, const double S_gr,
+    RelativePermeability::van_genuchten_mualem(const double       q,
+                                               const double       S_lr,
+                                               const double       S_gr,
                                                const std::string &parameter)
     {
-      check_input(q > 0 && q < 1, parameter + "/q", "the Mualem exponent q must lie in (0, 1), got " + str(q));
-      check_input(S_lr >= 0 && S_gr >= 0, parameter + "/S_lr",
+      check_input(q > 0 && q < 1,
+                  parameter + "/q",
+                  "the Mualem exponent q must lie in (0, 1), got " + str(q));
+      check_input(S_lr >= 0 && S_gr >= 0,
+                  parameter + "/S_lr",
                   "residual saturations must be non-negative, got S_lr = " + str(S_lr) +
                     ", S_gr = " + str(S_gr));
-      check_input(S_lr + S_gr < 1, parameter + "/S_lr",
+      check_input(S_lr + S_gr < 1,
+                  parameter + "/S_lr",
                   "S_lr + S_gr must be < 1, got S_lr + S_gr = " + str(S_lr + S_gr));
       RelativePermeability kr;
       kr.type = Type::van_genuchten_mualem;
@@ -204,11 +218,14 @@ namespace porofrac
     void
     RockType::validate(const std::string &prefix) const
     {
-      check_input(viscosity[0] > 0, prefix + "/Viscosity w",
+      check_input(viscosity[0] > 0,
+                  prefix + "/Viscosity w",
                   "viscosities must be positive, got " + str(viscosity[0]));
-      check_input(viscosity[1] > 0, prefix + "/Viscosity nw",
+      check_input(viscosity[1] > 0,
+                  prefix + "/Viscosity nw",
                   "viscosities must be positive, got " + str(viscosity[1]));
-      check_input(mobility_floor >= 0, prefix + "/Mobility floor",
+      check_input(mobility_floor >= 0,
+                  prefix + "/Mobility floor",
                   "must be non-negative, got " + str(mobility_floor));
     }
   } // namespace flow

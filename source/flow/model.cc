@@ -19,8 +19,9 @@ namespace porofrac
     namespace
     {
       double
-      get_double(const ParameterHandler &prm, const std::vector<std::string> &path,
-                 const std::string &name)
+      get_double(const ParameterHandler         &prm,
+                 const std::vector<std::string> &path,
+                 const std::string              &name)
       {
         return Utilities::string_to_double(prm.get(path, name));
       }
@@ -28,24 +29,27 @@ namespace porofrac
 
     template <int dim>
     FlowModel<dim>
-    make_flow_model(const ParameterHandler                         &prm,
-                    const geometry::CutMesh<dim>                   &mesh,
+    make_flow_model(const ParameterHandler                        &prm,
+                    const geometry::CutMesh<dim>                  &mesh,
                     const std::function<void(NewtonParameters &)> &adjust_newton)
     {
       const std::vector<std::string> flow = {"Flow"};
       FlowModel<dim>                 model;
-      const double mu_w  = get_double(prm, flow, "Viscosity w");
-      const double mu_nw = get_double(prm, flow, "Viscosity nw");
-      model.rocks        = {{parse_rock(prm, "Matrix", mu_w, mu_nw),
-                             parse_rock(prm, "Fracture", mu_w, mu_nw)}};
+      const double                   mu_w  = get_double(prm, flow, "Viscosity w");
+      const double                   mu_nw = get_double(prm, flow, "Viscosity nw");
+      model.rocks                          = {
+                                 {parse_rock(prm, "Matrix", mu_w, mu_nw), parse_rock(prm, "Fracture", mu_w, mu_nw)}};
       const auto matrix_bc   = parse_dirichlet(prm.get({"Flow", "Boundary conditions"}, "Matrix"),
-                                             model.rocks[0], "Flow/Boundary conditions/Matrix");
+                                             model.rocks[0],
+                                             "Flow/Boundary conditions/Matrix");
       const auto fracture_bc = parse_dirichlet(prm.get({"Flow", "Boundary conditions"}, "Fracture"),
-                                               model.rocks[1], "Flow/Boundary conditions/Fracture");
+                                               model.rocks[1],
+                                               "Flow/Boundary conditions/Fracture");
       std::set<types::boundary_id> matrix_ids, fracture_ids;
       for (const auto &b : matrix_bc)
         {
-          check_input(std::count(mesh.outer_boundary_ids.begin(), mesh.outer_boundary_ids.end(),
+          check_input(std::count(mesh.outer_boundary_ids.begin(),
+                                 mesh.outer_boundary_ids.end(),
                                  b.first),
                       "Flow/Boundary conditions/Matrix",
                       "boundary id " + std::to_string(b.first) + " is not on the mesh");
@@ -66,8 +70,8 @@ namespace porofrac
       check_input(ts.maximum_step > 0, "Flow/Maximum time step", "must be positive");
       check_input(ts.growth >= 1, "Flow/Time step growth", "must be >= 1");
 
-      NewtonParameters &newton  = model.newton;
-      newton.max_iterations     = Utilities::string_to_int(prm.get(flow, "Maximum Newton iterations"));
+      NewtonParameters &newton = model.newton;
+      newton.max_iterations = Utilities::string_to_int(prm.get(flow, "Maximum Newton iterations"));
       newton.residual_tolerance = get_double(prm, flow, "Residual tolerance");
       newton.update_tolerance   = get_double(prm, flow, "Update tolerance");
       newton.mass_tolerance     = get_double(prm, flow, "Mass balance tolerance");
@@ -78,9 +82,9 @@ namespace porofrac
       newton.entry_slope_iterations =
         Utilities::string_to_int(prm.get(flow, "Entry slope iterations"));
       check_input(newton.saturation_chop < 1, "Flow/Saturation chop", "must be below 1");
-      newton.entry_slope        = prm.get(flow, "Entry slope in Jacobian") == "true";
-      newton.capillary_bound    = prm.get(flow, "Capillary pressure bound") == "true";
-      newton.line_search        = prm.get(flow, "Line search") == "true";
+      newton.entry_slope     = prm.get(flow, "Entry slope in Jacobian") == "true";
+      newton.capillary_bound = prm.get(flow, "Capillary pressure bound") == "true";
+      newton.line_search     = prm.get(flow, "Line search") == "true";
       if (adjust_newton)
         adjust_newton(newton);
 
@@ -91,7 +95,8 @@ namespace porofrac
       model.initial_permeability = get_double(prm, {"Flow", "Matrix"}, "Permeability");
       model.initial_aperture     = get_double(prm, {"Flow", "Fracture"}, "Aperture");
       check_input(model.initial_porosity > 0 && model.initial_porosity < 1,
-                  "Flow/Matrix/Porosity", "must lie in (0, 1)");
+                  "Flow/Matrix/Porosity",
+                  "must lie in (0, 1)");
       check_input(model.initial_permeability > 0, "Flow/Matrix/Permeability", "must be positive");
       check_input(model.initial_aperture > 0, "Flow/Fracture/Aperture", "must be positive");
       grid.porosity.assign(grid.n_matrix_cells, model.initial_porosity);
@@ -102,31 +107,34 @@ namespace porofrac
       grid.damaged_layer_thickness =
         get_double(prm, {"Flow", "Fracture"}, "Damaged layer thickness");
       grid.damaged_layer_porosity = get_double(prm, {"Flow", "Fracture"}, "Damaged layer porosity");
-      check_input(grid.damaged_layer_thickness >= 0, "Flow/Fracture/Damaged layer thickness",
+      check_input(grid.damaged_layer_thickness >= 0,
+                  "Flow/Fracture/Damaged layer thickness",
                   "must be non-negative");
       check_input(grid.damaged_layer_porosity >= 0 && grid.damaged_layer_porosity < 1,
-                  "Flow/Fracture/Damaged layer porosity", "must lie in [0, 1)");
+                  "Flow/Fracture/Damaged layer porosity",
+                  "must lie in [0, 1)");
       check_input(grid.damaged_layer_thickness == 0 || grid.damaged_layer_porosity > 0,
                   "Flow/Fracture/Damaged layer porosity",
                   "must be positive when the damaged layer thickness is");
       grid.update_transmissibilities();
 
       model.solver = std::make_unique<TwoPhaseSolver<dim>>(grid, model.rocks, newton);
-      TwoPhaseSolver<dim> &solver = *model.solver;
-      solver.matrix_dirichlet     = matrix_bc;
-      solver.fracture_dirichlet   = fracture_bc;
-      solver.reference_pressure   = get_double(prm, flow, "Reference pressure");
-      const std::array<double, 2> p_m = {{get_double(prm, {"Flow", "Matrix"}, "Initial pressure w"),
-                                          get_double(prm, {"Flow", "Matrix"}, "Initial pressure nw")}};
+      TwoPhaseSolver<dim> &solver     = *model.solver;
+      solver.matrix_dirichlet         = matrix_bc;
+      solver.fracture_dirichlet       = fracture_bc;
+      solver.reference_pressure       = get_double(prm, flow, "Reference pressure");
+      const std::array<double, 2> p_m = {
+        {get_double(prm, {"Flow", "Matrix"}, "Initial pressure w"),
+         get_double(prm, {"Flow", "Matrix"}, "Initial pressure nw")}};
       const std::array<double, 2> p_f = {
         {get_double(prm, {"Flow", "Fracture"}, "Initial pressure w"),
          get_double(prm, {"Flow", "Fracture"}, "Initial pressure nw")}};
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         {
-          const auto &p = (grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::matrix ||
+          const auto &p   = (grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::matrix ||
                            grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface) ?
-                            p_m :
-                            p_f;
+                              p_m :
+                              p_f;
           solver.state[i] = {{p[0] - solver.reference_pressure, p[1] - solver.reference_pressure}};
         }
       solver.apply_dirichlet(solver.state);
@@ -150,8 +158,9 @@ namespace porofrac
                 }
               catch (...)
                 {
-                  throw InputError(name, "cannot parse '" + source_expression[phase] +
-                                           "' as a muparser expression of x, y (, z)");
+                  throw InputError(name,
+                                   "cannot parse '" + source_expression[phase] +
+                                     "' as a muparser expression of x, y (, z)");
                 }
               for (unsigned int K = 0; K < grid.n_matrix_cells; ++K)
                 {
@@ -165,10 +174,12 @@ namespace porofrac
     }
 
     template FlowModel<2>
-    make_flow_model(const ParameterHandler &, const geometry::CutMesh<2> &,
+    make_flow_model(const ParameterHandler &,
+                    const geometry::CutMesh<2> &,
                     const std::function<void(NewtonParameters &)> &);
     template FlowModel<3>
-    make_flow_model(const ParameterHandler &, const geometry::CutMesh<3> &,
+    make_flow_model(const ParameterHandler &,
+                    const geometry::CutMesh<3> &,
                     const std::function<void(NewtonParameters &)> &);
   } // namespace flow
 } // namespace porofrac

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/numbers.h>
+
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -102,10 +103,10 @@ namespace porofrac
       nodes.resize(n_matrix_cells + n_fracture_cells + n_interfaces);
       for (const auto &cell : tria.active_cell_iterators())
         {
-          Node &node   = nodes[cell->active_cell_index()];
-          node.kind    = NodeKind::matrix;
-          node.rock    = matrix_rock;
-          node.centre  = circumcentre<dim>(cell);
+          Node &node  = nodes[cell->active_cell_index()];
+          node.kind   = NodeKind::matrix;
+          node.rock   = matrix_rock;
+          node.centre = circumcentre<dim>(cell);
           Point<dim> centroid;
           for (unsigned int v = 0; v < dim + 1; ++v)
             centroid += cell->vertex(v) / double(dim + 1);
@@ -165,17 +166,30 @@ namespace porofrac
                           d_a = std::max(std::abs(d_a), 5e-3 * measure);
                           d_b = std::max(std::abs(d_b), 5e-3 * measure);
                         }
-                      connections.push_back({ConnectionKind::matrix_matrix, K, L, matrix_rock,
-                                             matrix_rock, area, d_a, d_b});
+                      connections.push_back({ConnectionKind::matrix_matrix,
+                                             K,
+                                             L,
+                                             matrix_rock,
+                                             matrix_rock,
+                                             area,
+                                             d_a,
+                                             d_b});
                     }
                   continue;
                 }
               const auto ff = mesh.fracture_face(cell, f);
               if (ff.first != numbers::invalid_unsigned_int)
                 {
-                  const unsigned int I = n_matrix_cells + n_fracture_cells + 2 * ff.first + ff.second;
-                  connections.push_back({ConnectionKind::matrix_interface, K, I, matrix_rock,
-                                         matrix_rock, area, d_K_pos, 0.});
+                  const unsigned int I =
+                    n_matrix_cells + n_fracture_cells + 2 * ff.first + ff.second;
+                  connections.push_back({ConnectionKind::matrix_interface,
+                                         K,
+                                         I,
+                                         matrix_rock,
+                                         matrix_rock,
+                                         area,
+                                         d_K_pos,
+                                         0.});
                   continue;
                 }
               const types::boundary_id id = cell->face(f)->boundary_id();
@@ -188,9 +202,14 @@ namespace porofrac
                   node.centre      = centre;
                   node.boundary_id = id;
                   nodes.push_back(node);
-                  connections.push_back({ConnectionKind::matrix_boundary, K,
-                                         static_cast<unsigned int>(nodes.size() - 1), matrix_rock,
-                                         matrix_rock, area, d_K_pos, 0.});
+                  connections.push_back({ConnectionKind::matrix_boundary,
+                                         K,
+                                         static_cast<unsigned int>(nodes.size() - 1),
+                                         matrix_rock,
+                                         matrix_rock,
+                                         area,
+                                         d_K_pos,
+                                         0.});
                 }
             }
         }
@@ -198,12 +217,15 @@ namespace porofrac
       // Interface-fracture connections (eq. (3); the interface carries rock type a = fracture).
       for (unsigned int s = 0; s < n_fracture_cells; ++s)
         for (unsigned int side = 0; side < 2; ++side)
-          connections.push_back({ConnectionKind::interface_fracture,
-                                 n_matrix_cells + n_fracture_cells + 2 * s + side,
-                                 n_matrix_cells + s, fracture_rock, fracture_rock,
-                                 mesh.fracture_faces[s].measure *
-                                   weight(axisymmetric, mesh.fracture_faces[s].centre),
-                                 0., 0.});
+          connections.push_back(
+            {ConnectionKind::interface_fracture,
+             n_matrix_cells + n_fracture_cells + 2 * s + side,
+             n_matrix_cells + s,
+             fracture_rock,
+             fracture_rock,
+             mesh.fracture_faces[s].measure * weight(axisymmetric, mesh.fracture_faces[s].centre),
+             0.,
+             0.});
 
       // Fracture-fracture connections through fracture nodes (2D).
       if (dim == 2)
@@ -229,28 +251,35 @@ namespace porofrac
               if (dirichlet || n_faces >= 3)
                 {
                   Node node;
-                  node.kind        = dirichlet ? NodeKind::dirichlet_fracture : NodeKind::intersection;
-                  node.rock        = fracture_rock;
-                  node.measure     = 0;
-                  node.centre      = fnode.location;
+                  node.kind    = dirichlet ? NodeKind::dirichlet_fracture : NodeKind::intersection;
+                  node.rock    = fracture_rock;
+                  node.measure = 0;
+                  node.centre  = fnode.location;
                   node.boundary_id = id;
                   nodes.push_back(node);
                   if (!dirichlet)
                     ++n_intersections;
                   for (const unsigned int s : fnode.faces)
-                    connections.push_back(
-                      {ConnectionKind::fracture_node, n_matrix_cells + s,
-                       static_cast<unsigned int>(nodes.size() - 1), fracture_rock, fracture_rock, w,
-                       (mesh.fracture_faces[s].centre - fnode.location).norm(), 0.});
+                    connections.push_back({ConnectionKind::fracture_node,
+                                           n_matrix_cells + s,
+                                           static_cast<unsigned int>(nodes.size() - 1),
+                                           fracture_rock,
+                                           fracture_rock,
+                                           w,
+                                           (mesh.fracture_faces[s].centre - fnode.location).norm(),
+                                           0.});
                 }
               else if (n_faces == 2)
                 {
                   const unsigned int s0 = fnode.faces[0], s1 = fnode.faces[1];
-                  connections.push_back(
-                    {ConnectionKind::fracture_fracture, n_matrix_cells + s0, n_matrix_cells + s1,
-                     fracture_rock, fracture_rock, w,
-                     (mesh.fracture_faces[s0].centre - fnode.location).norm(),
-                     (mesh.fracture_faces[s1].centre - fnode.location).norm()});
+                  connections.push_back({ConnectionKind::fracture_fracture,
+                                         n_matrix_cells + s0,
+                                         n_matrix_cells + s1,
+                                         fracture_rock,
+                                         fracture_rock,
+                                         w,
+                                         (mesh.fracture_faces[s0].centre - fnode.location).norm(),
+                                         (mesh.fracture_faces[s1].centre - fnode.location).norm()});
                 }
               // one face: a tip, no flux
             }
@@ -265,7 +294,8 @@ namespace porofrac
     void
     TpfaGrid<dim>::update_transmissibilities()
     {
-      check_input(normal_transmissibility > 0, "Flow/Fracture/Normal transmissibility",
+      check_input(normal_transmissibility > 0,
+                  "Flow/Fracture/Normal transmissibility",
                   "must be positive");
       for (const double k : permeability)
         check_input(k > 0 && std::isfinite(k), "Flow/Matrix/Permeability", "must be positive");
@@ -281,8 +311,7 @@ namespace porofrac
         switch (c.kind)
           {
             case ConnectionKind::matrix_matrix:
-              c.transmissibility =
-                c.area / (c.d_a / permeability[c.a] + c.d_b / permeability[c.b]);
+              c.transmissibility = c.area / (c.d_a / permeability[c.a] + c.d_b / permeability[c.b]);
               break;
             case ConnectionKind::matrix_boundary:
             case ConnectionKind::matrix_interface:
@@ -292,8 +321,7 @@ namespace porofrac
               c.transmissibility = c.area * normal_transmissibility;
               break;
             case ConnectionKind::fracture_fracture:
-              c.transmissibility =
-                c.area / (c.d_a / conductivity(c.a) + c.d_b / conductivity(c.b));
+              c.transmissibility = c.area / (c.d_a / conductivity(c.a) + c.d_b / conductivity(c.b));
               break;
             case ConnectionKind::fracture_node:
               c.transmissibility = c.area * conductivity(c.a) / c.d_a;

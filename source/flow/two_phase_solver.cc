@@ -7,8 +7,8 @@
 #include <porofrac/flow/two_phase_solver.h>
 
 #include <cmath>
-#include <memory>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace porofrac
@@ -19,9 +19,9 @@ namespace porofrac
     TwoPhaseSolver<dim>::TwoPhaseSolver(const TpfaGrid<dim>           &grid,
                                         const std::array<RockType, 2> &rocks,
                                         const NewtonParameters        &parameters)
-      : grid(grid)
-      , rocks(rocks)
-      , parameters(parameters)
+        : grid(grid)
+        , rocks(rocks)
+        , parameters(parameters)
     {
       node_dof.assign(grid.n_nodes(), numbers::invalid_unsigned_int);
       n_free = 0;
@@ -43,7 +43,8 @@ namespace porofrac
                 dsp.add(dof(c.b, p), dof(c.a, q));
               }
       sparsity.copy_from(dsp);
-      mean_pore_volume = total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
+      mean_pore_volume =
+        total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       jacobian.reinit(sparsity);
       lu = std::make_shared<SparseLU>();
       state.assign(grid.n_nodes(), {{0., 0.}});
@@ -70,7 +71,8 @@ namespace porofrac
       AssertThrow(p_E_reference.size() == grid.n_matrix_cells,
                   ExcDimensionMismatch(p_E_reference.size(), grid.n_matrix_cells));
       check_input(std::isfinite(inverse_biot_modulus) && inverse_biot_modulus >= 0,
-                  "Coupling/Biot modulus", "1/M must be finite and non-negative");
+                  "Coupling/Biot modulus",
+                  "1/M must be finite and non-negative");
       set_porosity_base(porosity_base);
       p_E_reference_        = p_E_reference;
       inverse_biot_modulus_ = inverse_biot_modulus;
@@ -97,7 +99,8 @@ namespace porofrac
       // p^E = p^w (1 - S) + p^nw S - U(p_c) = p^w + p_c S - U(p_c) (paper eq. (6)).
       const SaturationLaw &law = rocks[grid.nodes[node].rock].saturation;
       const double         pc  = s[node][1] - s[node][0];
-      return s[node][0] + reference_pressure + pc * law.saturation(pc) - (capillary_energy_ ? law.energy(pc) : 0.);
+      return s[node][0] + reference_pressure + pc * law.saturation(pc) -
+             (capillary_energy_ ? law.energy(pc) : 0.);
     }
 
     template <int dim>
@@ -110,7 +113,8 @@ namespace porofrac
       // Linearised Biot storage, eq. (11d).
       if (inverse_biot_modulus_ == 0)
         return porosity_base_[K];
-      return porosity_base_[K] + (equivalent_pressure(s, K) - p_E_reference_[K]) * inverse_biot_modulus_;
+      return porosity_base_[K] +
+             (equivalent_pressure(s, K) - p_E_reference_[K]) * inverse_biot_modulus_;
     }
 
     template <int dim>
@@ -123,7 +127,8 @@ namespace porofrac
 
     template <int dim>
     double
-    TwoPhaseSolver<dim>::pore_volume(const State &s, const unsigned int i,
+    TwoPhaseSolver<dim>::pore_volume(const State           &s,
+                                     const unsigned int     i,
                                      std::array<double, 2> &d) const
     {
       d = {{0., 0.}};
@@ -137,8 +142,8 @@ namespace porofrac
           const double         pc  = s[i][1] - s[i][0];
           const double         S   = law.saturation(pc);
           const double         x   = capillary_energy_ ? 0. : pc * law.derivative(pc);
-          d = {{measure * inverse_biot_modulus_ * (1. - S - x),
-                measure * inverse_biot_modulus_ * (S + x)}};
+          d                        = {{measure * inverse_biot_modulus_ * (1. - S - x),
+                                       measure * inverse_biot_modulus_ * (S + x)}};
         }
       return measure * porosity(s, i);
     }
@@ -181,10 +186,10 @@ namespace porofrac
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         if (grid.is_dirichlet(i))
           {
-            const auto &table =
-              grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::dirichlet_matrix ? matrix_dirichlet :
-                                                                                fracture_dirichlet;
-            const auto it = table.find(grid.nodes[i].boundary_id);
+            const auto &table = grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::dirichlet_matrix ?
+                                  matrix_dirichlet :
+                                  fracture_dirichlet;
+            const auto  it    = table.find(grid.nodes[i].boundary_id);
             Assert(it != table.end(), ExcInternalError());
             s[i] = {{it->second[0] - reference_pressure, it->second[1] - reference_pressure}};
           }
@@ -192,19 +197,21 @@ namespace porofrac
 
     template <int dim>
     double
-    TwoPhaseSolver<dim>::flux(const typename TpfaGrid<dim>::Connection &c, const State &s,
-                              const unsigned int phase, std::array<double, 4> &derivative) const
+    TwoPhaseSolver<dim>::flux(const typename TpfaGrid<dim>::Connection &c,
+                              const State                              &s,
+                              const unsigned int                        phase,
+                              std::array<double, 4>                    &derivative) const
     {
-      const double       delta = s[c.a][phase] - s[c.b][phase];
-      const bool         up_a  = delta >= 0;
-      const unsigned int e     = up_a ? c.a : c.b;
-      const RockType    &rock  = rocks[up_a ? c.rock_a : c.rock_b];
-      const double       pc    = s[e][1] - s[e][0];
-      const double       S     = rock.saturation.saturation(pc);
-      const double       eta   = rock.mobility(phase, S);
-      const double deta_dpc = rock.mobility_derivative(phase, S) * slope(rock, pc);
-      const double T        = c.transmissibility;
-      derivative            = {{0., 0., 0., 0.}};
+      const double       delta    = s[c.a][phase] - s[c.b][phase];
+      const bool         up_a     = delta >= 0;
+      const unsigned int e        = up_a ? c.a : c.b;
+      const RockType    &rock     = rocks[up_a ? c.rock_a : c.rock_b];
+      const double       pc       = s[e][1] - s[e][0];
+      const double       S        = rock.saturation.saturation(pc);
+      const double       eta      = rock.mobility(phase, S);
+      const double       deta_dpc = rock.mobility_derivative(phase, S) * slope(rock, pc);
+      const double       T        = c.transmissibility;
+      derivative                  = {{0., 0., 0., 0.}};
       derivative[phase] += T * eta;
       derivative[2 + phase] -= T * eta;
       const unsigned int o = up_a ? 0 : 2;
@@ -215,8 +222,11 @@ namespace porofrac
 
     template <int dim>
     void
-    TwoPhaseSolver<dim>::assemble(const State &s, const State &old, const double dt,
-                                  Vector<double> &residual, SparseMatrix<double> *J) const
+    TwoPhaseSolver<dim>::assemble(const State          &s,
+                                  const State          &old,
+                                  const double          dt,
+                                  Vector<double>       &residual,
+                                  SparseMatrix<double> *J) const
     {
       residual.reinit(2 * n_free);
       if (J)
@@ -234,11 +244,10 @@ namespace porofrac
               // slope active; S < 1e-6 with the capillary bound, where the phase's mobilities
               // can all vanish): a Jacobian-only virtual pore volume keeps its rows
               // non-singular. Above 1e-6 the Jacobian stays exact (quadratic convergence).
-              const double pc = s[i][1] - s[i][0];
-              const bool   absent =
-                parameters.capillary_bound ?
-                  rocks[grid.nodes[i].rock].saturation.saturation(pc) < 1e-6 :
-                  pc <= 0 && parameters.entry_slope && entry_slope_active;
+              const double pc     = s[i][1] - s[i][0];
+              const bool   absent = parameters.capillary_bound ?
+                                      rocks[grid.nodes[i].rock].saturation.saturation(pc) < 1e-6 :
+                                      pc <= 0 && parameters.entry_slope && entry_slope_active;
               if (!(J && absent))
                 continue;
               const double dS  = slope(rocks[grid.nodes[i].rock], pc);
@@ -276,7 +285,7 @@ namespace porofrac
       for (const auto &c : grid.connections)
         for (unsigned int phase = 0; phase < 2; ++phase)
           {
-            const double F = dt * flux(c, s, phase, d);
+            const double                      F    = dt * flux(c, s, phase, d);
             const std::array<unsigned int, 2> rows = {{dof(c.a, phase), dof(c.b, phase)}};
             const std::array<unsigned int, 4> cols = {
               {dof(c.a, 0), dof(c.a, 1), dof(c.b, 0), dof(c.b, 1)}};
@@ -298,8 +307,10 @@ namespace porofrac
     {
       /// The p_c closest to @p pc_new such that |S(p_c) - S(pc_old)| <= max_change.
       double
-      limit_saturation_change(const SaturationLaw &law, const double pc_old, const double pc_new,
-                              const double max_change)
+      limit_saturation_change(const SaturationLaw &law,
+                              const double         pc_old,
+                              const double         pc_new,
+                              const double         max_change)
       {
         const double S_old = law.saturation(pc_old), S_new = law.saturation(pc_new);
         if (std::abs(S_new - S_old) <= max_change)
@@ -317,8 +328,8 @@ namespace porofrac
       // With entry_slope, the Jacobian uses the entry slope S'(0+) where p_c <= 0 (an inexact
       // Newton that lets an absent phase enter); the residual is unchanged.
       if (pc <= 0 && (parameters.capillary_bound || (parameters.entry_slope && entry_slope_active)))
-        return rock.saturation.derivative(1e-12 * pressure_scale(
-                 &rock == &rocks[0] ? matrix_rock : fracture_rock));
+        return rock.saturation.derivative(
+          1e-12 * pressure_scale(&rock == &rocks[0] ? matrix_rock : fracture_rock));
       return rock.saturation.derivative(pc);
     }
 
@@ -419,8 +430,8 @@ namespace porofrac
       Vector<double> residual, update(2 * n_free);
       double         r0          = 0;
       double         last_update = std::numeric_limits<double>::infinity();
-      double         best_residual = std::numeric_limits<double>::infinity(), best_mass = best_residual;
-      unsigned int   last_progress = 0;
+      double best_residual = std::numeric_limits<double>::infinity(), best_mass = best_residual;
+      unsigned int last_progress = 0;
       apply_dirichlet(state);
       if (parameters.capillary_bound)
         for (unsigned int i = 0; i < grid.n_nodes(); ++i)
@@ -444,7 +455,7 @@ namespace porofrac
             assemble(state, old_state, dt, residual, &jacobian);
           }
           entry_slope_active = false;
-          const double r = residual.l2_norm();
+          const double r     = residual.l2_norm();
           if (!std::isfinite(r))
             {
               result.failure = "non-finite residual";
@@ -470,10 +481,12 @@ namespace porofrac
                       ph   = a;
                     }
               verbose << "        largest residual " << residual(dof(imax, ph)) << " (phase " << ph
-                      << ") at node " << imax << " (kind " << static_cast<int>(grid.nodes[imax].kind)
+                      << ") at node " << imax << " (kind "
+                      << static_cast<int>(grid.nodes[imax].kind)
                       << ", p_w = " << pressure(state, imax, 0)
-                      << ", p_c = " << state[imax][1] - state[imax][0] << ", old p_c = "
-                      << old_state[imax][1] - old_state[imax][0] << ")" << std::endl;
+                      << ", p_c = " << state[imax][1] - state[imax][0]
+                      << ", old p_c = " << old_state[imax][1] - old_state[imax][0] << ")"
+                      << std::endl;
             }
           verbose << "      Newton " << it << ": |R| = " << std::scientific << std::setprecision(3)
                   << r << ", update " << last_update << ", mass defect "
@@ -501,8 +514,9 @@ namespace porofrac
             {
               if (stagnation_fallback_holds(mass, last_update))
                 {
-                  verbose << "      Newton: stagnated within the fallback update tolerance, accepted"
-                          << std::endl;
+                  verbose
+                    << "      Newton: stagnated within the fallback update tolerance, accepted"
+                    << std::endl;
                   result.converged  = true;
                   result.iterations = it;
                   return result;
@@ -539,11 +553,11 @@ namespace porofrac
           for (unsigned int i = 0; i < grid.n_nodes(); ++i)
             if (!grid.is_dirichlet(i))
               {
-                const std::array<double, 2> dp = {{-update(dof(i, 0)), -update(dof(i, 1))}};
+                const std::array<double, 2> dp     = {{-update(dof(i, 0)), -update(dof(i, 1))}};
                 const double                pc_old = state[i][1] - state[i][0];
                 double                      dpc    = dp[1] - dp[0];
                 // Interface nodes carry both laws (matrix on the cell side): use the larger scale.
-                const bool interface = grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface;
+                const bool   interface = grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface;
                 const double scale =
                   interface ? std::max(pressure_scale(matrix_rock), pressure_scale(fracture_rock)) :
                               pressure_scale(grid.nodes[i].rock);
@@ -557,7 +571,8 @@ namespace porofrac
                 // p_c < 0 that the Newton step pushes up starts from the kink.
                 if (parameters.entry_slope && pc_old < 0 && dpc > 0)
                   dpc -= pc_old;
-                // Bound: p_c >= 0 (the non-wetting pressure of a saturated node is the wetting one).
+                // Bound: p_c >= 0 (the non-wetting pressure of a saturated node is the wetting
+                // one).
                 if (parameters.capillary_bound && pc_old + dpc < 0)
                   dpc = -pc_old;
                 // Saturation chop: |Delta S| <= saturation_chop under the node's law (both laws
@@ -567,7 +582,9 @@ namespace porofrac
                     double pc_new = pc_old + dpc;
                     for (unsigned int r = 0; r < 2; ++r)
                       if (interface || r == grid.nodes[i].rock)
-                        pc_new = limit_saturation_change(rocks[r].saturation, pc_old, pc_new,
+                        pc_new = limit_saturation_change(rocks[r].saturation,
+                                                         pc_old,
+                                                         pc_new,
                                                          parameters.saturation_chop);
                     dpc = pc_new - pc_old;
                   }
@@ -583,8 +600,8 @@ namespace porofrac
                 const double du = std::max(std::abs(dpw), std::abs(dpw + dpc));
                 if (du > du_max)
                   {
-                    du_max   = du;
-                    argmax   = i;
+                    du_max = du;
+                    argmax = i;
                   }
                 if ((pc_old > 0) != (pc_old + dpc > 0))
                   ++n_kink_crossings;
@@ -592,16 +609,17 @@ namespace porofrac
                   ++n_chopped;
               }
           const double previous_update = last_update;
-          last_update = du_max / std::max(p_max, 1e-300);
+          last_update                  = du_max / std::max(p_max, 1e-300);
           {
-            static const char *kinds[] = {"matrix", "fracture", "interface", "intersection",
-                                          "dirichlet", "dirichlet"};
+            static const char *kinds[] = {
+              "matrix", "fracture", "interface", "intersection", "dirichlet", "dirichlet"};
             const double pc = state[argmax][1] - state[argmax][0];
-            verbose << "        largest update at " << kinds[static_cast<int>(grid.nodes[argmax].kind)]
-                    << " node " << argmax << " (p_c = " << pc << ", S = "
-                    << saturation(state, argmax, grid.nodes[argmax].rock) << "), "
-                    << n_kink_crossings << " nodes crossed p_c = 0, " << n_chopped
-                    << " chopped" << std::endl;
+            verbose << "        largest update at "
+                    << kinds[static_cast<int>(grid.nodes[argmax].kind)] << " node " << argmax
+                    << " (p_c = " << pc
+                    << ", S = " << saturation(state, argmax, grid.nodes[argmax].rock) << "), "
+                    << n_kink_crossings << " nodes crossed p_c = 0, " << n_chopped << " chopped"
+                    << std::endl;
           }
           if (!std::isfinite(last_update))
             {
@@ -617,9 +635,9 @@ namespace porofrac
               std::unique_ptr<TimerOutput::Scope> t;
               if (timer)
                 t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: assembly");
-              const State full  = state;
-              double      theta = 1.;
-              bool        decreased = false;
+              const State    full      = state;
+              double         theta     = 1.;
+              bool           decreased = false;
               Vector<double> trial;
               for (unsigned int k = 0; k < parameters.line_search_steps; ++k)
                 {

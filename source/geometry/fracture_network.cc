@@ -40,20 +40,23 @@ namespace porofrac
           none,
           point,
           overlap
-        } kind = none;
+        } kind     = none;
         double   t = 0, u = 0; ///< parameters on the first and second segment (point)
         Point<2> where;
         Point<2> overlap_begin, overlap_end;
       };
 
       Meeting
-      meet(const Point<2> &p0, const Point<2> &p1, const Point<2> &q0, const Point<2> &q1,
-           const double tol)
+      meet(const Point<2> &p0,
+           const Point<2> &p1,
+           const Point<2> &q0,
+           const Point<2> &q1,
+           const double    tol)
       {
         Meeting            m;
         const Tensor<1, 2> r = p1 - p0, s = q1 - q0, qp = q0 - p0;
         const double       rr = r.norm(), ss = s.norm();
-        const double       c  = cross(r, s);
+        const double       c = cross(r, s);
         if (std::abs(c) <= 1e-12 * rr * ss)
           {
             if (std::abs(cross(qp, r)) / rr > tol)
@@ -112,7 +115,8 @@ namespace porofrac
               return value;
           }
         catch (...)
-          {}
+          {
+          }
         throw InputError(parameter, "'" + s + "' is not a number");
       }
 
@@ -124,7 +128,7 @@ namespace porofrac
     FractureNetwork::parse_points(const std::string &input, const std::string &parameter)
     {
       std::vector<Point<2>> points;
-      const std::string     s = trim(input);
+      const std::string     s   = trim(input);
       std::size_t           pos = 0;
       while (pos < s.size())
         {
@@ -134,8 +138,8 @@ namespace porofrac
               continue;
             }
           if (s[pos] != '(')
-            throw InputError(parameter, "expected '(' at '" + s.substr(pos, 20) +
-                                          "'; write points as (x, y)");
+            throw InputError(parameter,
+                             "expected '(' at '" + s.substr(pos, 20) + "'; write points as (x, y)");
           const auto close = s.find(')', pos);
           if (close == std::string::npos)
             throw InputError(parameter, "missing ')' after '" + s.substr(pos, 20) + "'");
@@ -155,9 +159,9 @@ namespace porofrac
     std::vector<Polyline>
     FractureNetwork::parse_fractures(const std::string &input, const std::string &parameter)
     {
-      std::vector<Polyline> result;
-      std::stringstream     all(input);
-      std::string           item;
+      std::vector<Polyline>  result;
+      std::stringstream      all(input);
+      std::string            item;
       std::set<unsigned int> ids;
       while (std::getline(all, item, ';'))
         {
@@ -166,21 +170,22 @@ namespace porofrac
             continue;
           const auto colon = item.find(':');
           if (colon == std::string::npos)
-            throw InputError(parameter, "fracture '" + item.substr(0, 30) +
-                                          "' has no id; write 'id: (x, y) (x, y) ...'");
+            throw InputError(parameter,
+                             "fracture '" + item.substr(0, 30) +
+                               "' has no id; write 'id: (x, y) (x, y) ...'");
           const std::string id_text = trim(item.substr(0, colon));
           if (id_text.empty() || !std::all_of(id_text.begin(), id_text.end(), ::isdigit) ||
               id_text.size() > 6)
-            throw InputError(parameter, "fracture id '" + id_text +
-                                          "' is not a non-negative integer below 1000000");
+            throw InputError(parameter,
+                             "fracture id '" + id_text +
+                               "' is not a non-negative integer below 1000000");
           Polyline f;
           f.id     = std::stoul(id_text);
           f.points = parse_points(item.substr(colon + 1), parameter);
           if (!ids.insert(f.id).second)
             throw InputError(parameter, "fracture id " + id_text + " is used twice");
           if (f.points.size() < 2)
-            throw InputError(parameter,
-                             "fracture " + id_text + " needs at least two points");
+            throw InputError(parameter, "fracture " + id_text + " needs at least two points");
           result.push_back(f);
         }
       return result;
@@ -206,9 +211,9 @@ namespace porofrac
     void
     FractureNetwork::validate(const std::string &parameter) const
     {
-      const auto  &poly = domain.corners;
-      const double tol  = 1e-10 * diameter();
-      auto on_boundary = [&](const Point<2> &x) {
+      const auto  &poly        = domain.corners;
+      const double tol         = 1e-10 * diameter();
+      auto         on_boundary = [&](const Point<2> &x) {
         for (unsigned int i = 0; i < poly.size(); ++i)
           if (distance_to_segment(x, poly[i], poly[(i + 1) % poly.size()]) <= tol)
             return true;
@@ -220,21 +225,24 @@ namespace porofrac
           const std::string name = "fracture " + std::to_string(f.id);
           for (unsigned int k = 0; k + 1 < f.points.size(); ++k)
             if (f.points[k].distance(f.points[k + 1]) <= tol)
-              throw InputError(parameter, name + ": segment from " + io::to_text(f.points[k]) + " to " +
-                                            io::to_text(f.points[k + 1]) + " has zero length");
+              throw InputError(parameter,
+                               name + ": segment from " + io::to_text(f.points[k]) + " to " +
+                                 io::to_text(f.points[k + 1]) + " has zero length");
           for (unsigned int k = 0; k < f.points.size(); ++k)
             {
               const bool end = (k == 0 || k + 1 == f.points.size());
               if (on_boundary(f.points[k]))
                 {
                   if (!end)
-                    throw InputError(parameter, name + ": point " + io::to_text(f.points[k]) +
-                                                  " lies on the domain boundary; only the end "
-                                                  "points of a fracture may");
+                    throw InputError(parameter,
+                                     name + ": point " + io::to_text(f.points[k]) +
+                                       " lies on the domain boundary; only the end "
+                                       "points of a fracture may");
                 }
               else if (!inside_polygon(f.points[k], poly))
                 throw InputError(parameter,
-                                 name + ": point " + io::to_text(f.points[k]) + " lies outside the domain");
+                                 name + ": point " + io::to_text(f.points[k]) +
+                                   " lies outside the domain");
             }
           for (unsigned int k = 0; k + 1 < f.points.size(); ++k)
             {
@@ -243,26 +251,31 @@ namespace porofrac
                 {
                   const Meeting m = meet(a, b, poly[i], poly[(i + 1) % poly.size()], tol);
                   if (m.kind == Meeting::overlap)
-                    throw InputError(parameter, name + " runs along the domain boundary between " +
-                                                  io::to_text(m.overlap_begin) + " and " +
-                                                  io::to_text(m.overlap_end));
+                    throw InputError(parameter,
+                                     name + " runs along the domain boundary between " +
+                                       io::to_text(m.overlap_begin) + " and " +
+                                       io::to_text(m.overlap_end));
                   if (m.kind == Meeting::point && m.where.distance(a) > tol &&
                       m.where.distance(b) > tol)
-                    throw InputError(parameter, name + " leaves the domain at " + io::to_text(m.where));
+                    throw InputError(parameter,
+                                     name + " leaves the domain at " + io::to_text(m.where));
                 }
               if (!on_boundary(0.5 * (a + b)) && !inside_polygon(0.5 * (a + b), poly))
-                throw InputError(parameter, name + ": segment from " + io::to_text(a) + " to " + io::to_text(b) +
-                                              " lies outside the domain");
+                throw InputError(parameter,
+                                 name + ": segment from " + io::to_text(a) + " to " +
+                                   io::to_text(b) + " lies outside the domain");
               // Self-crossings of the polyline.
               for (unsigned int j = k + 1; j + 1 < f.points.size(); ++j)
                 {
                   const Meeting m = meet(a, b, f.points[j], f.points[j + 1], tol);
                   if (m.kind == Meeting::overlap)
-                    throw InputError(parameter, name + " overlaps itself between " +
-                                                  io::to_text(m.overlap_begin) + " and " +
-                                                  io::to_text(m.overlap_end));
+                    throw InputError(parameter,
+                                     name + " overlaps itself between " +
+                                       io::to_text(m.overlap_begin) + " and " +
+                                       io::to_text(m.overlap_end));
                   if (m.kind == Meeting::point && j > k + 1)
-                    throw InputError(parameter, name + " crosses itself at " + io::to_text(m.where));
+                    throw InputError(parameter,
+                                     name + " crosses itself at " + io::to_text(m.where));
                 }
             }
         }
@@ -273,13 +286,17 @@ namespace porofrac
           for (unsigned int k = 0; k + 1 < fractures[i].points.size(); ++k)
             for (unsigned int l = 0; l + 1 < fractures[j].points.size(); ++l)
               {
-                const Meeting m = meet(fractures[i].points[k], fractures[i].points[k + 1],
-                                       fractures[j].points[l], fractures[j].points[l + 1], tol);
+                const Meeting m = meet(fractures[i].points[k],
+                                       fractures[i].points[k + 1],
+                                       fractures[j].points[l],
+                                       fractures[j].points[l + 1],
+                                       tol);
                 if (m.kind == Meeting::overlap)
-                  throw InputError(parameter, "fractures " + std::to_string(fractures[i].id) +
-                                                " and " + std::to_string(fractures[j].id) +
-                                                " overlap between " + io::to_text(m.overlap_begin) +
-                                                " and " + io::to_text(m.overlap_end));
+                  throw InputError(parameter,
+                                   "fractures " + std::to_string(fractures[i].id) + " and " +
+                                     std::to_string(fractures[j].id) + " overlap between " +
+                                     io::to_text(m.overlap_begin) + " and " +
+                                     io::to_text(m.overlap_end));
               }
     }
 
@@ -289,7 +306,7 @@ namespace porofrac
     FractureNetwork::planar_graph() const
     {
       PlanarGraph  graph;
-      const double tol = 1e-10 * diameter();
+      const double tol       = 1e-10 * diameter();
       auto         add_point = [&](const Point<2> &p) {
         for (unsigned int i = 0; i < graph.points.size(); ++i)
           if (graph.points[i].distance(p) <= 1e3 * tol)

@@ -3,8 +3,6 @@
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/io/text.h>
 
-#include <gmsh.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +10,8 @@
 #include <regex>
 #include <set>
 #include <sstream>
+
+#include <gmsh.h>
 
 namespace porofrac
 {
@@ -43,7 +43,7 @@ namespace porofrac
         const int cell_type = (dim == 2) ? 2 : 4; // 3-node triangle, 4-node tetrahedron
         const int face_type = (dim == 2) ? 1 : 2; // 2-node line, 3-node triangle
 
-        RawMesh<dim> raw;
+        RawMesh<dim>             raw;
         std::vector<std::size_t> node_tags;
         std::vector<double>      coords, parametric;
         gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, true, false);
@@ -66,7 +66,7 @@ namespace porofrac
 
         // Material ids from full-dimensional physical groups (0 without any).
         std::map<int, types::material_id> material_of_entity;
-        gmsh::vectorpair                   groups;
+        gmsh::vectorpair                  groups;
         gmsh::model::getPhysicalGroups(groups, dim);
         for (const auto &[d, tag] : groups)
           {
@@ -92,8 +92,9 @@ namespace porofrac
               }
           }
         POROFRAC_CHECK_INPUT(!raw.cells.empty(),
-                    InputError(parameter, std::string("the mesh has no ") +
-                                            (dim == 2 ? "triangles" : "tetrahedra")));
+                             InputError(parameter,
+                                        std::string("the mesh has no ") +
+                                          (dim == 2 ? "triangles" : "tetrahedra")));
 
         // Codimension-one physical groups: fractures and boundary parts.
         groups.clear();
@@ -110,7 +111,10 @@ namespace porofrac
             for (const int entity : group_entities)
               {
                 std::vector<std::size_t> element_tags, element_nodes;
-                gmsh::model::mesh::getElementsByType(face_type, element_tags, element_nodes, entity);
+                gmsh::model::mesh::getElementsByType(face_type,
+                                                     element_tags,
+                                                     element_nodes,
+                                                     entity);
                 for (std::size_t e = 0; e < element_tags.size(); ++e)
                   {
                     typename RawMesh<dim>::TaggedFace face;
@@ -124,9 +128,10 @@ namespace porofrac
                     else
                       {
                         POROFRAC_CHECK_INPUT(tag >= 0 && tag < 1000,
-                                    InputError(parameter, "physical group " + std::to_string(tag) +
-                                                            " ('" + name +
-                                                            "'): boundary ids must be in [0, 999]"));
+                                             InputError(parameter,
+                                                        "physical group " + std::to_string(tag) +
+                                                          " ('" + name +
+                                                          "'): boundary ids must be in [0, 999]"));
                         face.tag = tag;
                         raw.boundary_faces.push_back(face);
                       }
@@ -148,7 +153,8 @@ namespace porofrac
           const auto corners = FractureNetwork::parse_points(prm.box, "Geometry/Box");
           check_input(corners.size() == 2, "Geometry/Box", "needs exactly two corners");
           const Point<2> lo = corners[0], hi = corners[1];
-          check_input(hi[0] > lo[0] && hi[1] > lo[1], "Geometry/Box",
+          check_input(hi[0] > lo[0] && hi[1] > lo[1],
+                      "Geometry/Box",
                       "the second corner must lie above and to the right of the first");
           network.domain.corners  = {lo, Point<2>(hi[0], lo[1]), hi, Point<2>(lo[0], hi[1])};
           network.domain.edge_ids = {2, 1, 3, 0};
@@ -156,13 +162,15 @@ namespace porofrac
       else
         {
           network.domain.corners = FractureNetwork::parse_points(prm.polygon, "Geometry/Polygon");
-          check_input(network.domain.corners.size() >= 3, "Geometry/Polygon",
+          check_input(network.domain.corners.size() >= 3,
+                      "Geometry/Polygon",
                       "needs at least three corners");
-          double area = 0;
-          const auto &c = network.domain.corners;
+          double      area = 0;
+          const auto &c    = network.domain.corners;
           for (unsigned int i = 0; i < c.size(); ++i)
             area += c[i][0] * c[(i + 1) % c.size()][1] - c[(i + 1) % c.size()][0] * c[i][1];
-          check_input(area > 0, "Geometry/Polygon",
+          check_input(area > 0,
+                      "Geometry/Polygon",
                       "corners must be listed counter-clockwise and enclose a positive area");
           std::stringstream ids(prm.polygon_ids);
           std::string       item;
@@ -172,7 +180,8 @@ namespace porofrac
           if (network.domain.edge_ids.empty())
             for (unsigned int i = 0; i < c.size(); ++i)
               network.domain.edge_ids.push_back(i);
-          check_input(network.domain.edge_ids.size() == c.size(), "Geometry/Polygon boundary ids",
+          check_input(network.domain.edge_ids.size() == c.size(),
+                      "Geometry/Polygon boundary ids",
                       "needs one id per polygon edge (" + std::to_string(c.size()) + ")");
         }
       network.fractures = FractureNetwork::parse_fractures(prm.fractures, "Geometry/Fractures");
@@ -192,7 +201,7 @@ namespace porofrac
       std::vector<int> point_tags;
       for (const auto &p : graph.points)
         point_tags.push_back(gmsh::model::geo::addPoint(p[0], p[1], 0., prm.mesh_size));
-      std::vector<int>                      loop;
+      std::vector<int>                         loop;
       std::map<unsigned int, std::vector<int>> boundary_lines, fracture_lines;
       for (const auto &s : graph.boundary)
         {
@@ -214,10 +223,12 @@ namespace porofrac
       if (!all_fracture_lines.empty())
         gmsh::model::mesh::embed(1, all_fracture_lines, 2, surface);
       for (const auto &[id, lines] : boundary_lines)
-        gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, lines, id),
+        gmsh::model::setPhysicalName(1,
+                                     gmsh::model::addPhysicalGroup(1, lines, id),
                                      "boundary " + std::to_string(id));
       for (const auto &[id, lines] : fracture_lines)
-        gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, lines, 100000 + id),
+        gmsh::model::setPhysicalName(1,
+                                     gmsh::model::addPhysicalGroup(1, lines, 100000 + id),
                                      "fracture " + std::to_string(id));
       gmsh::model::addPhysicalGroup(2, {surface}, 0);
 
@@ -226,7 +237,8 @@ namespace porofrac
       if (!all_fracture_lines.empty())
         {
           const int distance = gmsh::model::mesh::field::add("Distance");
-          gmsh::model::mesh::field::setNumbers(distance, "EdgesList",
+          gmsh::model::mesh::field::setNumbers(distance,
+                                               "EdgesList",
                                                std::vector<double>(all_fracture_lines.begin(),
                                                                    all_fracture_lines.end()));
           gmsh::model::mesh::field::setNumber(distance, "NNodesByEdge", 200);
@@ -235,7 +247,8 @@ namespace porofrac
           gmsh::model::mesh::field::setNumber(threshold, "LcMin", prm.fracture_mesh_size);
           gmsh::model::mesh::field::setNumber(threshold, "LcMax", prm.mesh_size);
           gmsh::model::mesh::field::setNumber(threshold, "DistMin", 0.);
-          gmsh::model::mesh::field::setNumber(threshold, "DistMax",
+          gmsh::model::mesh::field::setNumber(threshold,
+                                              "DistMax",
                                               prm.transition_distance > 0 ?
                                                 prm.transition_distance :
                                                 5 * prm.mesh_size);
@@ -250,11 +263,13 @@ namespace porofrac
             if (item.empty())
               continue;
             const auto colon = item.rfind(':');
-            check_input(colon != std::string::npos, "Geometry/Refinement regions",
+            check_input(colon != std::string::npos,
+                        "Geometry/Refinement regions",
                         "write each region as '(x0, y0) (x1, y1): h'");
             const auto corners =
               FractureNetwork::parse_points(item.substr(0, colon), "Geometry/Refinement regions");
-            check_input(corners.size() == 2, "Geometry/Refinement regions",
+            check_input(corners.size() == 2,
+                        "Geometry/Refinement regions",
                         "each region needs two corners");
             double h = 0;
             try
@@ -262,16 +277,27 @@ namespace porofrac
                 h = std::stod(item.substr(colon + 1));
               }
             catch (...)
-              {}
-            check_input(h > 0, "Geometry/Refinement regions",
-                        "cell size '" + trim(item.substr(colon + 1)) + "' must be a positive number");
+              {
+              }
+            check_input(h > 0,
+                        "Geometry/Refinement regions",
+                        "cell size '" + trim(item.substr(colon + 1)) +
+                          "' must be a positive number");
             const int box = gmsh::model::mesh::field::add("Box");
             gmsh::model::mesh::field::setNumber(box, "VIn", h);
             gmsh::model::mesh::field::setNumber(box, "VOut", prm.mesh_size);
-            gmsh::model::mesh::field::setNumber(box, "XMin", std::min(corners[0][0], corners[1][0]));
-            gmsh::model::mesh::field::setNumber(box, "XMax", std::max(corners[0][0], corners[1][0]));
-            gmsh::model::mesh::field::setNumber(box, "YMin", std::min(corners[0][1], corners[1][1]));
-            gmsh::model::mesh::field::setNumber(box, "YMax", std::max(corners[0][1], corners[1][1]));
+            gmsh::model::mesh::field::setNumber(box,
+                                                "XMin",
+                                                std::min(corners[0][0], corners[1][0]));
+            gmsh::model::mesh::field::setNumber(box,
+                                                "XMax",
+                                                std::max(corners[0][0], corners[1][0]));
+            gmsh::model::mesh::field::setNumber(box,
+                                                "YMin",
+                                                std::min(corners[0][1], corners[1][1]));
+            gmsh::model::mesh::field::setNumber(box,
+                                                "YMax",
+                                                std::max(corners[0][1], corners[1][1]));
             fields.push_back(box);
           }
       }
@@ -282,7 +308,7 @@ namespace porofrac
           fields.push_back(expression);
         }
       {
-        const int constant = gmsh::model::mesh::field::add("MathEval");
+        const int          constant = gmsh::model::mesh::field::add("MathEval");
         std::ostringstream h;
         h.precision(17);
         h << prm.mesh_size;
@@ -311,12 +337,14 @@ namespace porofrac
     read_gmsh_file(const std::string &filename, const std::string &parameter)
     {
       check_input(!filename.empty(), parameter, "no mesh file given");
-      check_input(std::ifstream(filename).good(), parameter,
+      check_input(std::ifstream(filename).good(),
+                  parameter,
                   "cannot open mesh file '" + std::filesystem::path(filename).filename().string() +
                     "'");
       const bool is_geo = filename.size() > 4 && filename.substr(filename.size() - 4) == ".geo";
       const bool is_msh = filename.size() > 4 && filename.substr(filename.size() - 4) == ".msh";
-      check_input(is_geo || is_msh, parameter,
+      check_input(is_geo || is_msh,
+                  parameter,
                   "mesh file '" + filename + "' must end in .geo or .msh");
       GmshSession session;
       try
@@ -327,7 +355,9 @@ namespace porofrac
         }
       catch (...)
         {
-          throw InputError(parameter, "gmsh could not read '" + std::filesystem::path(filename).filename().string() + "'");
+          throw InputError(parameter,
+                           "gmsh could not read '" +
+                             std::filesystem::path(filename).filename().string() + "'");
         }
       return extract_mesh<dim>(parameter);
     }
@@ -339,10 +369,12 @@ namespace porofrac
     make_cut_mesh(const GeometryParameters &prm)
     {
       RawMesh<dim> raw;
-      check_input(prm.domain == "mesh file" || prm.mesh_size > 0, "Geometry/Mesh size",
+      check_input(prm.domain == "mesh file" || prm.mesh_size > 0,
+                  "Geometry/Mesh size",
                   "must be positive");
       check_input(prm.domain == "mesh file" || prm.fracture_mesh_size > 0,
-                  "Geometry/Fracture mesh size", "must be positive");
+                  "Geometry/Fracture mesh size",
+                  "must be positive");
       if (prm.domain == "mesh file")
         raw = read_gmsh_file<dim>(prm.mesh_file, "Geometry/Mesh file");
       else

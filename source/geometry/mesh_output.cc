@@ -25,8 +25,10 @@ namespace porofrac
       std::ofstream out(filename);
       AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
       out << std::setprecision(12);
-      const auto &faces = mesh.fracture_faces;
-      FractureFields fields = {{"fracture_id", {}}, {"face_id", {}}, {"abscissa", {}},
+      const auto    &faces  = mesh.fracture_faces;
+      FractureFields fields = {{"fracture_id", {}},
+                               {"face_id", {}},
+                               {"abscissa", {}},
                                {"distance_to_tip", {}}};
       for (const auto &f : faces)
         {
@@ -163,7 +165,9 @@ namespace porofrac
           centre_inside[cell->active_cell_index()] =
             contains<dim>(p, centres[cell->active_cell_index()], 1e-10) ? 1 : 0;
         }
-      write_cell_fields(mesh, basename, format,
+      write_cell_fields(mesh,
+                        basename,
+                        format,
                         {{"material_id", material}, {"circumcentre_inside", centre_inside}});
       write_fracture_cells(mesh, basename + "_fractures." + format, format);
     }
@@ -171,16 +175,24 @@ namespace porofrac
 
 
     template void
-    write_fracture_cells<2>(const CutMesh<2> &, const std::string &, const std::string &,
+    write_fracture_cells<2>(const CutMesh<2> &,
+                            const std::string &,
+                            const std::string &,
                             const FractureFields &);
     template void
-    write_fracture_cells<3>(const CutMesh<3> &, const std::string &, const std::string &,
+    write_fracture_cells<3>(const CutMesh<3> &,
+                            const std::string &,
+                            const std::string &,
                             const FractureFields &);
     template void
-    write_cell_fields<2>(const CutMesh<2> &, const std::string &, const std::string &,
+    write_cell_fields<2>(const CutMesh<2> &,
+                         const std::string &,
+                         const std::string &,
                          const CellFields &);
     template void
-    write_cell_fields<3>(const CutMesh<3> &, const std::string &, const std::string &,
+    write_cell_fields<3>(const CutMesh<3> &,
+                         const std::string &,
+                         const std::string &,
                          const CellFields &);
     template void
     write_mesh<2>(const CutMesh<2> &, const std::string &, const std::string &);

@@ -35,7 +35,8 @@ namespace porofrac
             n[1]                 = -t[0];
           }
         else
-          n = cross_product_3d(face->vertex(1) - face->vertex(0), face->vertex(2) - face->vertex(0));
+          n =
+            cross_product_3d(face->vertex(1) - face->vertex(0), face->vertex(2) - face->vertex(0));
         n /= n.norm();
         if ((face->center() - cell->center()) * n < 0)
           n *= -1;
@@ -78,7 +79,7 @@ namespace porofrac
                 if (j != i && k != i)
                   {
                     const Tensor<1, dim> a = p[j] - p[i], b = p[k] - p[i];
-                    const double angle =
+                    const double         angle =
                       std::acos(std::clamp(a * b / (a.norm() * b.norm()), -1., 1.)) * 180 / M_PI;
                     q.min_angle_degrees = std::min(q.min_angle_degrees, angle);
                     q.max_angle_degrees = std::max(q.max_angle_degrees, angle);

@@ -9,49 +9,78 @@ namespace porofrac
     GeometryParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
-      prm.declare_entry("Domain", "box", Patterns::Selection("box|polygon|mesh file"),
+      prm.declare_entry("Domain",
+                        "box",
+                        Patterns::Selection("box|polygon|mesh file"),
                         "Kind of domain: an axis-aligned box (boundary ids 0: x min, 1: x max, "
                         "2: y min, 3: y max), a polygon, or a gmsh mesh file.");
-      prm.declare_entry("Box", "(0, 0) (1, 1)", Patterns::Anything(),
+      prm.declare_entry("Box",
+                        "(0, 0) (1, 1)",
+                        Patterns::Anything(),
                         "Lower-left and upper-right corners of the box domain, in m: "
                         "'(x0, y0) (x1, y1)'.");
-      prm.declare_entry("Polygon", "", Patterns::Anything(),
+      prm.declare_entry("Polygon",
+                        "",
+                        Patterns::Anything(),
                         "Corners of a polygonal domain, counter-clockwise, in m: "
                         "'(x, y) (x, y) (x, y) ...'.");
-      prm.declare_entry("Polygon boundary ids", "", Patterns::List(Patterns::Integer(0, 999)),
+      prm.declare_entry("Polygon boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0, 999)),
                         "Boundary id of each polygon edge (edge k joins corners k and k+1); "
                         "empty: edge k gets id k.");
-      prm.declare_entry("Fractures", "", Patterns::Anything(),
+      prm.declare_entry("Fractures",
+                        "",
+                        Patterns::Anything(),
                         "Fractures as polylines with ids, in m: 'id: (x, y) (x, y) ...; id: ...'. "
                         "Fractures may cross or meet (X, T, L), may end on the outer boundary, "
                         "and must not overlap or leave the domain.");
-      prm.declare_entry("Mesh file", "", Patterns::Anything(),
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
                         "gmsh .geo or .msh file (Domain = mesh file), relative to the deck. "
                         "Physical groups named 'fracture N' are fractures; other codimension-one "
                         "groups give boundary ids, full-dimensional groups material ids.");
-      prm.declare_entry("Mesh size", "0.1", Patterns::Double(0),
+      prm.declare_entry("Mesh size",
+                        "0.1",
+                        Patterns::Double(0),
                         "Target cell size far from the fractures, in m.");
-      prm.declare_entry("Fracture mesh size", "0.02", Patterns::Double(0),
+      prm.declare_entry("Fracture mesh size",
+                        "0.02",
+                        Patterns::Double(0),
                         "Fracture face length, in m: each straight fracture segment gets "
                         "round(length / size) faces (at least one).");
-      prm.declare_entry("Transition distance", "0", Patterns::Double(0),
+      prm.declare_entry("Transition distance",
+                        "0",
+                        Patterns::Double(0),
                         "Distance from the fractures over which the cell size grows linearly "
                         "from the fracture mesh size to the mesh size, in m (0: five times the "
                         "mesh size).");
-      prm.declare_entry("Mesh size expression", "", Patterns::Anything(),
+      prm.declare_entry("Mesh size expression",
+                        "",
+                        Patterns::Anything(),
                         "Optional extra size field, a gmsh MathEval expression of x, y, z "
                         "(e.g. '0.03 + 0.03*(y-5)'); the smallest of all size fields wins.");
-      prm.declare_entry("Refinement regions", "", Patterns::Anything(),
+      prm.declare_entry("Refinement regions",
+                        "",
+                        Patterns::Anything(),
                         "Boxes with their own cell size: '(x0, y0) (x1, y1): h; ...', in m.");
-      prm.declare_entry("Global refinements", "0", Patterns::Integer(0, 8),
+      prm.declare_entry("Global refinements",
+                        "0",
+                        Patterns::Integer(0, 8),
                         "Uniform refinements of the generated mesh (each splits every triangle "
                         "into four and every fracture face into two).");
-      prm.declare_entry("Delaunay flips", "false", Patterns::Bool(),
-                        "Flip edges (never fracture, boundary or material-interface edges) after "
-                        "meshing and refinement until the mesh is Delaunay: TPFA with circumcentres "
-                        "then has no connection of non-positive distance. Refined meshes are no "
-                        "longer nested; keep false for convergence studies of the mechanics.");
-      prm.declare_entry("Mesh algorithm", "delaunay", Patterns::Selection("delaunay|frontal-delaunay"),
+      prm.declare_entry(
+        "Delaunay flips",
+        "false",
+        Patterns::Bool(),
+        "Flip edges (never fracture, boundary or material-interface edges) after "
+        "meshing and refinement until the mesh is Delaunay: TPFA with circumcentres "
+        "then has no connection of non-positive distance. Refined meshes are no "
+        "longer nested; keep false for convergence studies of the mechanics.");
+      prm.declare_entry("Mesh algorithm",
+                        "delaunay",
+                        Patterns::Selection("delaunay|frontal-delaunay"),
                         "gmsh 2D meshing algorithm; Delaunay meshes suit TPFA best.");
       prm.leave_subsection();
     }
@@ -62,12 +91,12 @@ namespace porofrac
     GeometryParameters::parse_parameters(ParameterHandler &prm, const std::string &deck_directory)
     {
       prm.enter_subsection("Geometry");
-      domain             = prm.get("Domain");
-      box                = prm.get("Box");
-      polygon            = prm.get("Polygon");
-      polygon_ids        = prm.get("Polygon boundary ids");
-      fractures          = prm.get("Fractures");
-      mesh_file          = prm.get("Mesh file");
+      domain      = prm.get("Domain");
+      box         = prm.get("Box");
+      polygon     = prm.get("Polygon");
+      polygon_ids = prm.get("Polygon boundary ids");
+      fractures   = prm.get("Fractures");
+      mesh_file   = prm.get("Mesh file");
       if (!mesh_file.empty() && mesh_file[0] != '/' && !deck_directory.empty())
         mesh_file = deck_directory + "/" + mesh_file;
       mesh_size           = prm.get_double("Mesh size");

@@ -62,7 +62,7 @@ namespace porofrac
       if constexpr (dim == 2)
         {
           std::vector<std::array<unsigned int, dim + 1>> new_cells;
-          std::vector<types::material_id>              new_material;
+          std::vector<types::material_id>                new_material;
           new_cells.reserve(4 * cells.size());
           for (unsigned int c = 0; c < cells.size(); ++c)
             {
@@ -108,7 +108,7 @@ namespace porofrac
         {
           orient_cells();
           std::set<std::pair<unsigned int, unsigned int>> constrained;
-          auto key = [](unsigned int a, unsigned int b) {
+          auto                                            key = [](unsigned int a, unsigned int b) {
             return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
           };
           for (const auto *faces : {&boundary_faces, &fracture_faces})
@@ -119,10 +119,11 @@ namespace porofrac
           auto in_circle = [&](unsigned int a, unsigned int b, unsigned int c, unsigned int d) {
             const Tensor<1, 2> A = vertices[a] - vertices[d], B = vertices[b] - vertices[d],
                                C = vertices[c] - vertices[d];
-            const double det = A.norm_square() * (B[0] * C[1] - B[1] * C[0]) -
+            const double det     = A.norm_square() * (B[0] * C[1] - B[1] * C[0]) -
                                B.norm_square() * (A[0] * C[1] - A[1] * C[0]) +
                                C.norm_square() * (A[0] * B[1] - A[1] * B[0]);
-            const double scale = A.norm_square() * B.norm_square() + B.norm_square() * C.norm_square() +
+            const double scale = A.norm_square() * B.norm_square() +
+                                 B.norm_square() * C.norm_square() +
                                  C.norm_square() * A.norm_square();
             return det > 1e-10 * scale; // cocircular quads (common after refinement) stay put
           };
@@ -130,7 +131,8 @@ namespace porofrac
           unsigned int total = 0;
           for (unsigned int pass = 0; pass < 100; ++pass)
             {
-              std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>> cells_of_edge;
+              std::map<std::pair<unsigned int, unsigned int>, std::vector<unsigned int>>
+                cells_of_edge;
               for (unsigned int c = 0; c < cells.size(); ++c)
                 for (unsigned int i = 0; i < 3; ++i)
                   cells_of_edge[key(cells[c][i], cells[c][(i + 1) % 3])].push_back(c);

@@ -29,12 +29,13 @@ namespace porofrac
         const auto        pos = message.find(key);
         if (pos == std::string::npos)
           return "";
-        const std::string rest = message.substr(pos + key.size());
-        std::string pattern = rest.substr(0, rest.find(">."));
+        const std::string rest    = message.substr(pos + key.size());
+        std::string       pattern = rest.substr(0, rest.find(">."));
         // Collapse deal.II's line breaks and indentation into single spaces.
         std::string collapsed;
         for (const char c : pattern)
-          if (!std::isspace(static_cast<unsigned char>(c)) || (!collapsed.empty() && collapsed.back() != ' '))
+          if (!std::isspace(static_cast<unsigned char>(c)) ||
+              (!collapsed.empty() && collapsed.back() != ' '))
             collapsed += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
         return collapsed;
       }
@@ -43,7 +44,7 @@ namespace porofrac
 
 
     Deck::Deck(ParameterHandler &prm)
-      : prm(prm)
+        : prm(prm)
     {
       // Learn the declared entries from the handler's own short listing.
       std::stringstream listing;
@@ -72,13 +73,14 @@ namespace porofrac
     {
       if (!entries.count(path))
         {
-          std::string hint;
-          const auto  slash = path.rfind('/');
+          std::string       hint;
+          const auto        slash   = path.rfind('/');
           const std::string section = slash == std::string::npos ? "" : path.substr(0, slash);
           if (!section.empty() && !subsections.count(section))
             hint = " (there is no subsection '" + section + "')";
-          throw InputError(path, "is not a known parameter" + hint +
-                                   "; `porofrac --print-parameters` lists them all");
+          throw InputError(path,
+                           "is not a known parameter" + hint +
+                             "; `porofrac --print-parameters` lists them all");
         }
       std::vector<std::string> parts;
       std::stringstream        s(path);
@@ -101,8 +103,9 @@ namespace porofrac
       if (!error.empty())
         {
           const std::string pattern = pattern_of(error);
-          throw InputError(path, "value '" + value + "' is not allowed" +
-                                   (pattern.empty() ? "" : " (expected " + pattern + ")"));
+          throw InputError(path,
+                           "value '" + value + "' is not allowed" +
+                             (pattern.empty() ? "" : " (expected " + pattern + ")"));
         }
     }
 
@@ -113,8 +116,7 @@ namespace porofrac
     {
       const auto equal = assignment.find('=');
       if (equal == std::string::npos || trim(assignment.substr(0, equal)).empty())
-        throw InputError("--set", "'" + assignment +
-                                    "' is not of the form \"Section/Name=value\"");
+        throw InputError("--set", "'" + assignment + "' is not of the form \"Section/Name=value\"");
       set(trim(assignment.substr(0, equal)), trim(assignment.substr(equal + 1)));
     }
 
@@ -183,15 +185,16 @@ namespace porofrac
               // Shared fragments (e.g. a scene's geometry), relative to this deck, top level only.
               if (!path.empty())
                 throw InputError("deck", where + "'include' is only allowed outside subsections");
-              std::string file = trim(statement.substr(8));
+              std::string file  = trim(statement.substr(8));
               const auto  slash = filename.rfind('/');
               if (!file.empty() && file[0] != '/' && slash != std::string::npos)
                 file = filename.substr(0, slash + 1) + file;
               read(file);
             }
           else
-            throw InputError("deck", where + "cannot read '" + statement.substr(0, 40) +
-                                       "' (expected 'subsection', 'set' or 'end')");
+            throw InputError("deck",
+                             where + "cannot read '" + statement.substr(0, 40) +
+                               "' (expected 'subsection', 'set' or 'end')");
         }
       if (!path.empty())
         throw InputError("deck", "subsection '" + path.back() + "' is not closed with 'end'");

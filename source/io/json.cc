@@ -12,56 +12,67 @@ namespace porofrac
   namespace io
   {
     Json::Json()
-      : kind(Type::null)
-    {}
+        : kind(Type::null)
+    {
+    }
     Json::Json(const bool value)
-      : kind(Type::boolean)
-      , b(value)
-    {}
+        : kind(Type::boolean)
+        , b(value)
+    {
+    }
     Json::Json(const double value)
-      : kind(Type::number)
-      , number(value)
-    {}
+        : kind(Type::number)
+        , number(value)
+    {
+    }
     Json::Json(const int value)
-      : kind(Type::integer)
-      , integer(value)
-    {}
+        : kind(Type::integer)
+        , integer(value)
+    {
+    }
     Json::Json(const unsigned int value)
-      : kind(Type::integer)
-      , integer(value)
-    {}
+        : kind(Type::integer)
+        , integer(value)
+    {
+    }
     Json::Json(const long value)
-      : kind(Type::integer)
-      , integer(value)
-    {}
+        : kind(Type::integer)
+        , integer(value)
+    {
+    }
     Json::Json(const unsigned long value)
-      : kind(Type::integer)
-      , integer(static_cast<long long>(value))
-    {}
+        : kind(Type::integer)
+        , integer(static_cast<long long>(value))
+    {
+    }
     Json::Json(const long long value)
-      : kind(Type::integer)
-      , integer(value)
-    {}
+        : kind(Type::integer)
+        , integer(value)
+    {
+    }
     Json::Json(const unsigned long long value)
-      : kind(Type::integer)
-      , integer(static_cast<long long>(value))
-    {}
+        : kind(Type::integer)
+        , integer(static_cast<long long>(value))
+    {
+    }
     Json::Json(const char *value)
-      : kind(Type::string)
-      , text(value)
-    {}
+        : kind(Type::string)
+        , text(value)
+    {
+    }
     Json::Json(const std::string &value)
-      : kind(Type::string)
-      , text(value)
-    {}
+        : kind(Type::string)
+        , text(value)
+    {
+    }
     Json::Json(const std::vector<double> &values)
-      : kind(Type::array)
+        : kind(Type::array)
     {
       for (const double v : values)
         items.emplace_back(v);
     }
     Json::Json(const std::vector<unsigned int> &values)
-      : kind(Type::array)
+        : kind(Type::array)
     {
       for (const unsigned int v : values)
         items.emplace_back(v);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
@@ -56,23 +57,27 @@ namespace porofrac
     template <int dim>
     ContactProblem<dim>::ContactProblem(const geometry::CutMesh<dim> &mesh,
                                         const ContactParameters      &parameters,
-                                        ConditionalOStream &progress, TimerOutput &timer)
-      : mesh(mesh)
-      , prm(parameters)
-      , progress(progress)
-      , timer(timer)
-      , fe(FE_SimplexP<dim>(2), dim)
-      , dof_handler(mesh.triangulation)
+                                        ConditionalOStream           &progress,
+                                        TimerOutput                  &timer)
+        : mesh(mesh)
+        , prm(parameters)
+        , progress(progress)
+        , timer(timer)
+        , fe(FE_SimplexP<dim>(2), dim)
+        , dof_handler(mesh.triangulation)
     {
       check_input(prm.c > 0, "Mechanics/Complementarity parameter c", "must be positive");
       check_input(prm.young_modulus > 0, "Mechanics/Young modulus", "must be positive");
-      check_input(prm.poisson_ratio < 0.5 && prm.poisson_ratio > -1, "Mechanics/Poisson ratio",
+      check_input(prm.poisson_ratio < 0.5 && prm.poisson_ratio > -1,
+                  "Mechanics/Poisson ratio",
                   "must be below 0.5 and above -1");
       check_input(prm.tolerance > 0, "Mechanics/Tolerance", "must be positive");
       check_input(prm.max_iterations > 0, "Mechanics/Max iterations", "must be positive");
-      check_input(!prm.axisymmetric || dim == 2, "Mechanics/Axisymmetric",
+      check_input(!prm.axisymmetric || dim == 2,
+                  "Mechanics/Axisymmetric",
                   "the axisymmetric mode needs a 2D radial section (Dimension = 2)");
-      check_input(prm.axisymmetric || prm.pre_stress_hoop == 0, "Mechanics/Pre-stress hoop",
+      check_input(prm.axisymmetric || prm.pre_stress_hoop == 0,
+                  "Mechanics/Pre-stress hoop",
                   "a hoop pre-stress needs Axisymmetric = true");
       if (prm.axisymmetric)
         for (const auto &v : mesh.triangulation.get_vertices())
@@ -122,18 +127,22 @@ namespace porofrac
             {
               if (std::find(mesh.outer_boundary_ids.begin(), mesh.outer_boundary_ids.end(), id) ==
                   mesh.outer_boundary_ids.end())
-                throw InputError(pname, "boundary id " + std::to_string(id) +
-                                          " is not an outer boundary of the mesh");
+                throw InputError(pname,
+                                 "boundary id " + std::to_string(id) +
+                                   " is not an outer boundary of the mesh");
               std::vector<bool> mask(dim, false);
               for (const auto &[c, e] : comps)
                 mask[c] = true;
-              auto fp = make_vector_function<dim>(comps, pname);
+              auto                         fp = make_vector_function<dim>(comps, pname);
               Functions::ZeroFunction<dim> zero(dim);
-              VectorTools::interpolate_boundary_values(mesh.mapping(), dof_handler, id,
+              VectorTools::interpolate_boundary_values(mesh.mapping(),
+                                                       dof_handler,
+                                                       id,
                                                        homogeneous ?
                                                          static_cast<const Function<dim> &>(zero) :
                                                          *fp,
-                                                       *target, ComponentMask(mask));
+                                                       *target,
+                                                       ComponentMask(mask));
             }
           // Point constraints (5.2.1 symmetry): every vertex at the point.
           for (const PointConstraint &pc : prm.point_constraints)
@@ -156,8 +165,7 @@ namespace porofrac
                           if (!homogeneous)
                             {
                               FunctionParser<dim> fp(1);
-                              fp.initialize(coordinate_names<dim>(false), e,
-                                            {{"pi", numbers::PI}});
+                              fp.initialize(coordinate_names<dim>(false), e, {{"pi", numbers::PI}});
                               target->set_inhomogeneity(dof, fp.value(p));
                             }
                         }
@@ -171,7 +179,8 @@ namespace porofrac
             }
           target->close();
         }
-      check_input(constraints.n_constraints() > 0, "Mechanics/Dirichlet",
+      check_input(constraints.n_constraints() > 0,
+                  "Mechanics/Dirichlet",
                   "no Dirichlet condition or point constraint: the elasticity system is singular");
     }
 
@@ -185,9 +194,9 @@ namespace porofrac
       schur.reset();
       schur_unavailable = false;
 
-      const unsigned int n_u = dof_handler.n_dofs();
-      const unsigned int N   = n_dofs();
-      DynamicSparsityPattern dsp(N, N);
+      const unsigned int                   n_u = dof_handler.n_dofs();
+      const unsigned int                   N   = n_dofs();
+      DynamicSparsityPattern               dsp(N, N);
       std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
@@ -200,7 +209,9 @@ namespace porofrac
 
       // Coupling int_sigma lambda . [v] (paper eq. (10)), [v] = v+ - v-.
       const QGaussSimplex<dim - 1> face_quadrature(3);
-      FEFaceValues<dim>            fe_face(mesh.mapping(), fe, face_quadrature,
+      FEFaceValues<dim>            fe_face(mesh.mapping(),
+                                fe,
+                                face_quadrature,
                                 update_values | update_quadrature_points | update_JxW_values);
       coupling.assign(mesh.fracture_faces.size(), {});
       face_measures.assign(mesh.fracture_faces.size(), 0.);
@@ -209,9 +220,10 @@ namespace porofrac
           std::map<std::pair<types::global_dof_index, unsigned int>, double> entries;
           for (unsigned int side = 0; side < 2; ++side)
             {
-              const typename DoFHandler<dim>::active_cell_iterator cell(
-                &mesh.triangulation, face.cell[side]->level(), face.cell[side]->index(),
-                &dof_handler);
+              const typename DoFHandler<dim>::active_cell_iterator cell(&mesh.triangulation,
+                                                                        face.cell[side]->level(),
+                                                                        face.cell[side]->index(),
+                                                                        &dof_handler);
               fe_face.reinit(cell, face.face_no[side]);
               cell->get_dof_indices(local);
               const double sign = (side == geometry::plus ? 1. : -1.);
@@ -262,8 +274,8 @@ namespace porofrac
       friction_values.resize(mesh.fracture_faces.size());
       for (const auto &face : mesh.fracture_faces)
         {
-          const auto  it   = prm.friction.find(face.fracture_id);
-          std::string expr = (it != prm.friction.end() ? it->second : prm.friction_all);
+          const auto          it   = prm.friction.find(face.fracture_id);
+          std::string         expr = (it != prm.friction.end() ? it->second : prm.friction_all);
           FunctionParser<dim> fp(1);
           try
             {
@@ -295,14 +307,18 @@ namespace porofrac
       // Hooke's law; in 2D these Lame coefficients give plane strain.
       const double mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu));
 
-      const QGaussSimplex<dim>     quadrature(3);
-      const QGaussSimplex<dim - 1> face_quadrature(3);
-      FEValues<dim>                fe_values(mesh.mapping(), fe, quadrature,
+      const QGaussSimplex<dim>         quadrature(3);
+      const QGaussSimplex<dim - 1>     face_quadrature(3);
+      FEValues<dim>                    fe_values(mesh.mapping(),
+                              fe,
+                              quadrature,
                               update_values | update_gradients | update_quadrature_points |
                                 update_JxW_values);
-      FEFaceValues<dim>            fe_face(mesh.mapping(), fe, face_quadrature,
-                                update_values | update_quadrature_points |
-                                  update_normal_vectors | update_JxW_values);
+      FEFaceValues<dim>                fe_face(mesh.mapping(),
+                                fe,
+                                face_quadrature,
+                                update_values | update_quadrature_points | update_normal_vectors |
+                                  update_JxW_values);
       const FEValuesExtractors::Vector disp(0);
 
       std::unique_ptr<FunctionParser<dim>> body;
@@ -336,9 +352,9 @@ namespace porofrac
       Vector<double>                       value(dim);
       Vector<double>                       cell_div(n);
       const bool                           axi = prm.axisymmetric;
-      K_full = 0;
-      base_matrix = 0;
-      f = 0;
+      K_full                                   = 0;
+      base_matrix                              = 0;
+      f                                        = 0;
       divergence.assign(mesh.triangulation.n_active_cells(), {});
       cell_measures.assign(mesh.triangulation.n_active_cells(), 0.);
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -349,10 +365,10 @@ namespace porofrac
           cell_div    = 0;
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
-              const Point<dim> &x  = fe_values.quadrature_point(q);
+              const Point<dim> &x = fe_values.quadrature_point(q);
               // Axisymmetric: integrals over the ring, weight 2 pi r; strain gains the hoop
               // component u_r / r (r = x[1], radial component 1).
-              const double      JxW = measure_weight(axi, x) * fe_values.JxW(q);
+              const double JxW = measure_weight(axi, x) * fe_values.JxW(q);
               cell_measures[cell->active_cell_index()] += JxW;
               for (unsigned int i = 0; i < n; ++i)
                 {
@@ -360,7 +376,7 @@ namespace porofrac
                   eps_hoop[i] = (axi && fe.system_to_component_index(i).first == 1) ?
                                   fe_values.shape_value(i, q) / x[1] :
                                   0.;
-                  div[i] = trace(eps[i]) + eps_hoop[i];
+                  div[i]      = trace(eps[i]) + eps_hoop[i];
                 }
               if (body)
                 body->vector_value(x, value);
@@ -391,7 +407,7 @@ namespace porofrac
                 fe_face.reinit(cell, fn);
                 for (unsigned int q = 0; q < face_quadrature.size(); ++q)
                   {
-                    const double   JxW =
+                    const double JxW =
                       measure_weight(axi, fe_face.quadrature_point(q)) * fe_face.JxW(q);
                     Tensor<1, dim> t;
                     if (tr)
@@ -401,8 +417,8 @@ namespace porofrac
                           t[d] += value[d];
                       }
                     if (pr)
-                      t -= pressure[id]->value(fe_face.quadrature_point(q)) *
-                           fe_face.normal_vector(q);
+                      t -=
+                        pressure[id]->value(fe_face.quadrature_point(q)) * fe_face.normal_vector(q);
                     for (unsigned int i = 0; i < n; ++i)
                       {
                         const unsigned int c = fe.system_to_component_index(i).first;
@@ -481,7 +497,7 @@ namespace porofrac
     FaceState
     ContactProblem<dim>::state(const unsigned int fi) const
     {
-      const Tensor<2, dim>        R = frame(fi);
+      const Tensor<2, dim>       R = frame(fi);
       const LocalContactLaw<dim> law{friction_values[fi], prm.c};
       return law.state(R * multiplier(fi), R * jump(fi));
     }
@@ -520,10 +536,10 @@ namespace porofrac
       // Contact rows, (25)-(26) scaled to stress units, weighted by |sigma|.
       for (unsigned int fi = 0; fi < coupling.size(); ++fi)
         {
-          const Tensor<2, dim>        R = frame(fi);
+          const Tensor<2, dim>       R = frame(fi);
           const LocalContactLaw<dim> law{friction_values[fi], c};
-          const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
-          const double                w = face_measures[fi];
+          const Tensor<1, dim>       l = R * multiplier(fi), j = R * jump(fi);
+          const double               w = face_measures[fi];
           parts.contact += w * law.residual(l, j, true).norm_square();
           parts.contact_unscaled += w * law.residual(l, j, false).norm_square();
           parts.lambda += w * l.norm_square();
@@ -555,7 +571,7 @@ namespace porofrac
     ContactProblem<dim>::time_linear_solve() const
     {
       // Linear elasticity with every fracture open: the multiplier rows read lambda = 0.
-      Timer               clock;
+      Timer                clock;
       SparseMatrix<double> A(sparsity);
       A.copy_from(base_matrix);
       const unsigned int n_u = dof_handler.n_dofs();
@@ -594,7 +610,8 @@ namespace porofrac
     void
     ContactProblem<dim>::apply_linearization(const std::vector<Tensor<2, dim>> &AlR,
                                              const std::vector<Tensor<2, dim>> &AjR,
-                                             const Vector<double> &x, Vector<double> &y) const
+                                             const Vector<double>              &x,
+                                             Vector<double>                    &y) const
     {
       // Rows [0, n_u): K x_u + B^T x_lambda (base_matrix, constrained rows as in the full
       // system); face rows: A_l R x_lambda + A_j R [x_u] (as assembled in solve()).
@@ -622,7 +639,8 @@ namespace porofrac
       const unsigned int n_u = dof_handler.n_dofs();
       const unsigned int N   = n_dofs();
       const unsigned int n_f = coupling.size();
-      check_input(prm.cycle_damping >= 0 && prm.cycle_damping < 1, "Mechanics/Cycle damping",
+      check_input(prm.cycle_damping >= 0 && prm.cycle_damping < 1,
+                  "Mechanics/Cycle damping",
                   "must be in [0, 1)");
       check_input(prm.c_start >= 0, "Mechanics/Continuation c start", "must be >= 0");
       check_input(prm.continuation_factor > 1, "Mechanics/Continuation factor", "must be > 1");
@@ -632,7 +650,7 @@ namespace porofrac
       backtracks = cycles_detected = 0;
       time_contact_rows = time_factorization = time_solves = time_residuals = 0;
       time_cholesky = time_form_W = 0;
-      converged = false;
+      converged                   = false;
       if (prm.schur_complement && !schur && !schur_unavailable)
         {
           TimerOutput::Scope t(timer, "Mechanics: Schur complement setup");
@@ -641,15 +659,14 @@ namespace porofrac
             constrained[i] = constraints_hom.is_constrained(i);
           try
             {
-              schur = std::make_unique<MultiplierSchurComplement<dim>>(base_matrix, n_u, coupling,
-                                                                       face_measures, constrained);
+              schur = std::make_unique<MultiplierSchurComplement<dim>>(
+                base_matrix, n_u, coupling, face_measures, constrained);
               time_cholesky = schur->time_cholesky;
               time_form_W   = schur->time_form_W;
               progress << "    Schur complement: Cholesky of K (" << n_u << " dofs, "
-                       << schur->cholesky().factor_nonzeros() << " nonzeros in L) "
-                       << time_cholesky << " s, W (" << dim * n_f << "^2, "
-                       << schur->reach_entries << " nonzeros in L^{-1} P J^T) " << time_form_W
-                       << " s" << std::endl;
+                       << schur->cholesky().factor_nonzeros() << " nonzeros in L) " << time_cholesky
+                       << " s, W (" << dim * n_f << "^2, " << schur->reach_entries
+                       << " nonzeros in L^{-1} P J^T) " << time_form_W << " s" << std::endl;
             }
           catch (const SolverFailure &e)
             {
@@ -673,19 +690,19 @@ namespace porofrac
               for (unsigned int d = 0; d < dim; ++d)
                 lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
         }
-      solved_once = true;
-      const ResidualParts g0 = residual_parts(prm.c);
+      solved_once                  = true;
+      const ResidualParts g0       = residual_parts(prm.c);
       const double        g0_norm2 = g0.mechanical + g0.contact_unscaled;
       // Continuation in c: the complementarity functions (25)-(26) have the same zeros for every
       // c > 0, so c may move from c_start to the target during the iterations.
       double c_now = (prm.c_start > 0 ? prm.c_start : prm.c);
       // Face states of every iterate, for the cycling safeguard.
       std::vector<std::vector<FaceState>> seen_states;
-      Vector<double> rhs(N), delta(N), u_old(n_u), lambda_old(lambda.size());
-      Timer          clock;
-      std::vector<Tensor<2, dim>> AlR(n_f), AjR(n_f);
+      Vector<double>                      rhs(N), delta(N), u_old(n_u), lambda_old(lambda.size());
+      Timer                               clock;
+      std::vector<Tensor<2, dim>>         AlR(n_f), AjR(n_f);
       factorizations = reused_factorizations = 0;
-      bool line_search_on = false;
+      bool line_search_on                    = false;
       for (iterations = 1; iterations <= prm.max_iterations; ++iterations)
         {
           std::vector<FaceState> states(n_f);
@@ -707,17 +724,17 @@ namespace porofrac
             // increment.
             for (unsigned int fi = 0; fi < n_f; ++fi)
               {
-                const Tensor<2, dim>        R = frame(fi);
+                const Tensor<2, dim>       R = frame(fi);
                 const LocalContactLaw<dim> law{friction_values[fi], c_now};
-                const Tensor<1, dim>        l = R * multiplier(fi), j = R * jump(fi);
-                Tensor<2, dim>              Al, Aj;
-                Tensor<1, dim>              r_loc;
-                states[fi] = law.rows(prm.method, l, j, Al, Aj, r_loc);
+                const Tensor<1, dim>       l = R * multiplier(fi), j = R * jump(fi);
+                Tensor<2, dim>             Al, Aj;
+                Tensor<1, dim>             r_loc;
+                states[fi]               = law.rows(prm.method, l, j, Al, Aj, r_loc);
                 const Tensor<1, dim> res = r_loc - Al * l - Aj * j;
                 AlR[fi]                  = Al * R;
                 AjR[fi]                  = Aj * R;
-                same_matrix = same_matrix && AlR[fi] == factorized_AlR[fi] &&
-                              AjR[fi] == factorized_AjR[fi];
+                same_matrix =
+                  same_matrix && AlR[fi] == factorized_AlR[fi] && AjR[fi] == factorized_AjR[fi];
                 for (unsigned int i = 0; i < dim; ++i)
                   rhs(n_u + dim * fi + i) = res[i];
               }
@@ -795,8 +812,8 @@ namespace porofrac
                 clock.restart();
                 SolverControl control(prm.reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
                 SolverGMRES<Vector<double>> gmres(
-                  control, SolverGMRES<Vector<double>>::AdditionalData(
-                             prm.reuse_iterations + 2, true));
+                  control,
+                  SolverGMRES<Vector<double>>::AdditionalData(prm.reuse_iterations + 2, true));
                 delta = 0;
                 try
                   {
@@ -805,7 +822,8 @@ namespace porofrac
                     ++reused_factorizations;
                   }
                 catch (const SolverControl::NoConvergence &)
-                  {}
+                  {
+                  }
                 time_solves += clock.wall_time();
               }
             if (!solved)
@@ -856,8 +874,8 @@ namespace porofrac
 
           TimerOutput::Scope t(timer, "Mechanics: contact update");
           clock.restart();
-          u_old      = u;
-          lambda_old = lambda;
+          u_old         = u;
+          lambda_old    = lambda;
           auto set_step = [&](const double alpha) {
             for (unsigned int i = 0; i < n_u; ++i)
               u(i) = u_old(i) + alpha * delta(i);
@@ -893,8 +911,8 @@ namespace porofrac
               for (unsigned int k = 1; k < prm.line_search_memory && k < residual_history.size();
                    ++k)
                 phi0 = std::max(phi0, residual_history[residual_history.size() - 1 - k]);
-              double       phi      = merit(trial, scale2);
-              double       best     = phi, best_alpha = alpha;
+              double       phi  = merit(trial, scale2);
+              double       best = phi, best_alpha = alpha;
               unsigned int halvings = 0;
               while (phi > (1 - 1e-4 * alpha) * phi0 && halvings < prm.line_search_halvings)
                 {
@@ -948,9 +966,8 @@ namespace porofrac
       std::ostringstream s;
       s << "contact solver ("
         << (prm.method == ContactMethod::active_set ? "active set" : "semismooth newton")
-        << ") did not converge in " << prm.max_iterations
-        << " iterations; last relative residual " << std::scientific << std::setprecision(3)
-        << residual_history.back();
+        << ") did not converge in " << prm.max_iterations << " iterations; last relative residual "
+        << std::scientific << std::setprecision(3) << residual_history.back();
       throw SolverFailure(s.str());
     }
 
@@ -968,8 +985,9 @@ namespace porofrac
 
     template <int dim>
     void
-    ContactProblem<dim>::set_contact_solver(const ContactMethod method, const double c,
-                                            const bool stick_guess)
+    ContactProblem<dim>::set_contact_solver(const ContactMethod method,
+                                            const double        c,
+                                            const bool          stick_guess)
     {
       check_input(c > 0, "Mechanics/Complementarity parameter c", "must be positive");
       prm.method      = method;
@@ -1049,9 +1067,10 @@ namespace porofrac
       fv.reinit(cell);
       std::vector<SymmetricTensor<2, dim>> eps(1);
       fv[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(u, eps);
-      const double E = prm.young_modulus, nu = prm.poisson_ratio;
-      const double mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu));
-      SymmetricTensor<2, dim> s = 2 * mu * eps[0] + lam * trace(eps[0]) * unit_symmetric_tensor<dim>();
+      const double            E = prm.young_modulus, nu = prm.poisson_ratio;
+      const double            mu = E / (2 * (1 + nu)), lam = E * nu / ((1 + nu) * (1 - 2 * nu));
+      SymmetricTensor<2, dim> s =
+        2 * mu * eps[0] + lam * trace(eps[0]) * unit_symmetric_tensor<dim>();
       if (!prm.pre_stress.empty())
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = i; j < dim; ++j)

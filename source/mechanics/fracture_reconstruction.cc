@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <porofrac/mechanics/fracture_reconstruction.h>
@@ -14,19 +15,22 @@ namespace porofrac
     std::vector<FracturePointValues<dim>>
     reconstruct_fracture_fields(const ContactProblem<dim> &problem, const unsigned int n_points)
     {
-      const auto            &mesh = problem.get_mesh();
-      const auto            &dh   = problem.get_dof_handler();
-      const FiniteElement<dim> &fe = dh.get_fe();
-      const Mapping<dim>    &mapping = mesh.mapping();
-      const QGaussSimplex<dim - 1> face_quadrature(n_points);
-      FEFaceValues<dim> fe_face(mapping, fe, face_quadrature,
+      const auto                          &mesh    = problem.get_mesh();
+      const auto                          &dh      = problem.get_dof_handler();
+      const FiniteElement<dim>            &fe      = dh.get_fe();
+      const Mapping<dim>                  &mapping = mesh.mapping();
+      const QGaussSimplex<dim - 1>         face_quadrature(n_points);
+      FEFaceValues<dim>                    fe_face(mapping,
+                                fe,
+                                face_quadrature,
                                 update_values | update_quadrature_points | update_JxW_values);
-      const FEValuesExtractors::Vector         disp(0);
-      std::vector<types::global_dof_index>     local(fe.n_dofs_per_cell());
+      const FEValuesExtractors::Vector     disp(0);
+      std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
       auto plus_cell = [&](const geometry::FractureFace<dim> &face, const unsigned int side) {
         return typename DoFHandler<dim>::active_cell_iterator(&mesh.triangulation,
                                                               face.cell[side]->level(),
-                                                              face.cell[side]->index(), &dh);
+                                                              face.cell[side]->index(),
+                                                              &dh);
       };
 
       // Nodal tractions of the plus side: (B^T lambda)_i / int phi_i, per component.
@@ -58,8 +62,8 @@ namespace porofrac
           fe_face[disp].get_function_values(problem.displacement(), u_plus);
           cell->get_dof_indices(local);
           // The minus side at the same physical points.
-          const auto               minus = plus_cell(face, geometry::minus);
-          std::vector<Point<dim>>  unit(face_quadrature.size());
+          const auto              minus = plus_cell(face, geometry::minus);
+          std::vector<Point<dim>> unit(face_quadrature.size());
           for (unsigned int q = 0; q < face_quadrature.size(); ++q)
             unit[q] = mapping.transform_real_to_unit_cell(minus, fe_face.quadrature_point(q));
           FEValues<dim> fe_minus(mapping, fe, Quadrature<dim>(unit), update_values);

@@ -20,16 +20,17 @@ namespace porofrac
     write_fracture_table_header(std::ostream &out, const unsigned int dim, const bool with_time)
     {
       out << "fracture_id,face_id,s,x,y," << (dim == 3 ? "z," : "")
-          << "jump_n,jump_t,lambda_n,lambda_t,state,aperture" << (with_time ? ",time" : "")
-          << '\n';
+          << "jump_n,jump_t,lambda_n,lambda_t,state,aperture" << (with_time ? ",time" : "") << '\n';
     }
 
 
 
     template <int dim>
     void
-    write_fracture_table_rows(std::ostream &out, const ContactProblem<dim> &problem,
-                              const std::vector<double> *aperture, const double *time)
+    write_fracture_table_rows(std::ostream              &out,
+                              const ContactProblem<dim> &problem,
+                              const std::vector<double> *aperture,
+                              const double              *time)
     {
       const auto precision = out.precision(10);
       for (const auto &face : problem.get_mesh().fracture_faces)
@@ -58,10 +59,14 @@ namespace porofrac
     }
 
     template void
-    write_fracture_table_rows(std::ostream &, const ContactProblem<2> &,
-                              const std::vector<double> *, const double *);
+    write_fracture_table_rows(std::ostream &,
+                              const ContactProblem<2> &,
+                              const std::vector<double> *,
+                              const double *);
     template void
-    write_fracture_table_rows(std::ostream &, const ContactProblem<3> &,
-                              const std::vector<double> *, const double *);
+    write_fracture_table_rows(std::ostream &,
+                              const ContactProblem<3> &,
+                              const std::vector<double> *,
+                              const double *);
   } // namespace mechanics
 } // namespace porofrac

@@ -17,10 +17,10 @@ namespace porofrac
       const std::vector<std::vector<CouplingEntry>> &coupling,
       const std::vector<double>                     &face_measures,
       const std::vector<bool>                       &constrained)
-      : n_u(n_u)
-      , n_f(coupling.size())
-      , entries(coupling.size())
-      , measures(face_measures)
+        : n_u(n_u)
+        , n_f(coupling.size())
+        , entries(coupling.size())
+        , measures(face_measures)
     {
       for (unsigned int f = 0; f < n_f; ++f)
         for (const CouplingEntry &e : coupling[f])
@@ -35,7 +35,7 @@ namespace porofrac
       // live on the few dofs of one face each, so G is formed by the sparse-column Gram
       // product of the Cholesky factor (SparseCholesky::inverse_gram).
       clock.restart();
-      const unsigned int m = dim * n_f;
+      const unsigned int                                        m = dim * n_f;
       std::vector<std::vector<std::pair<unsigned int, double>>> columns(m);
       for (unsigned int k = 0; k < m; ++k)
         {

@@ -36,7 +36,8 @@ namespace porofrac
 
       /// "x=expr, y=expr" -> component -> expression.
       std::map<unsigned int, std::string>
-      parse_components(const std::string &text, const unsigned int dim,
+      parse_components(const std::string &text,
+                       const unsigned int dim,
                        const std::string &parameter)
       {
         std::map<unsigned int, std::string> m;
@@ -65,7 +66,8 @@ namespace porofrac
     } // namespace
 
     std::map<types::boundary_id, std::map<unsigned int, std::string>>
-    parse_component_map(const std::string &text, const unsigned int dim,
+    parse_component_map(const std::string &text,
+                        const unsigned int dim,
                         const std::string &parameter)
     {
       std::map<types::boundary_id, std::map<unsigned int, std::string>> result;
@@ -105,7 +107,8 @@ namespace porofrac
     }
 
     std::vector<PointConstraint>
-    parse_point_constraints(const std::string &text, const unsigned int dim,
+    parse_point_constraints(const std::string &text,
+                            const unsigned int dim,
                             const std::string &parameter)
     {
       std::vector<PointConstraint> result;
@@ -115,8 +118,7 @@ namespace porofrac
             continue;
           const auto open = entry.find('('), close = entry.find(')');
           const auto colon = entry.find(':', close == std::string::npos ? 0 : close);
-          if (open == std::string::npos || close == std::string::npos ||
-              colon == std::string::npos)
+          if (open == std::string::npos || close == std::string::npos || colon == std::string::npos)
             throw InputError(parameter, "expected '(px, py): x=value' in '" + entry + "'");
           PointConstraint pc;
           for (const std::string &c :
@@ -130,8 +132,9 @@ namespace porofrac
                 throw InputError(parameter, "bad coordinate '" + c + "'");
               }
           if (pc.point.size() != dim)
-            throw InputError(parameter, "the point in '" + entry + "' needs " +
-                                          std::to_string(dim) + " coordinates");
+            throw InputError(parameter,
+                             "the point in '" + entry + "' needs " + std::to_string(dim) +
+                               " coordinates");
           pc.values = parse_components(entry.substr(colon + 1), dim, parameter);
           result.push_back(pc);
         }

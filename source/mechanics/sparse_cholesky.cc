@@ -1,20 +1,26 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/lac/lapack_templates.h>
+
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/sparse_cholesky.h>
 
-#include <deal.II/lac/lapack_templates.h>
-
-#include <cholmod.h>
-
 #include <algorithm>
-
 #include <cstring>
 #include <sstream>
 
+#include <cholmod.h>
+
 extern "C" void
-dtrsm_(const char *side, const char *uplo, const char *transa, const char *diag,
-       const dealii::types::blas_int *m, const dealii::types::blas_int *n, const double *alpha,
-       const double *a, const dealii::types::blas_int *lda, double *b,
+dtrsm_(const char                    *side,
+       const char                    *uplo,
+       const char                    *transa,
+       const char                    *diag,
+       const dealii::types::blas_int *m,
+       const dealii::types::blas_int *n,
+       const double                  *alpha,
+       const double                  *a,
+       const dealii::types::blas_int *lda,
+       double                        *b,
        const dealii::types::blas_int *ldb);
 
 namespace porofrac
@@ -41,14 +47,14 @@ namespace porofrac
       apply(const int system, double *x, const unsigned int n, const unsigned int n_columns)
       {
         cholmod_dense B;
-        B.nrow  = n;
-        B.ncol  = n_columns;
-        B.nzmax = std::size_t(n) * n_columns;
-        B.d     = n;
-        B.x     = x;
-        B.z     = nullptr;
-        B.xtype = CHOLMOD_REAL;
-        B.dtype = CHOLMOD_DOUBLE;
+        B.nrow           = n;
+        B.ncol           = n_columns;
+        B.nzmax          = std::size_t(n) * n_columns;
+        B.d              = n;
+        B.x              = x;
+        B.z              = nullptr;
+        B.xtype          = CHOLMOD_REAL;
+        B.dtype          = CHOLMOD_DOUBLE;
         cholmod_dense *X = cholmod_solve(system, factor, &B, &common);
         std::memcpy(x, X->x, sizeof(double) * B.nzmax);
         cholmod_free_dense(&X, &common);
@@ -56,7 +62,7 @@ namespace porofrac
     };
 
     SparseCholesky::SparseCholesky()
-      : data(new Data)
+        : data(new Data)
     {
       cholmod_start(&data->common);
       data->common.print = 0;
@@ -85,13 +91,12 @@ namespace porofrac
         for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
           if (it->column() <= i)
             ++nnz;
-      cholmod_sparse *A =
-        cholmod_allocate_sparse(n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL,
-                                &data->common);
-      int    *Ap = static_cast<int *>(A->p);
-      int    *Ai = static_cast<int *>(A->i);
-      double *Ax = static_cast<double *>(A->x);
-      std::size_t k = 0;
+      cholmod_sparse *A = cholmod_allocate_sparse(
+        n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL, &data->common);
+      int        *Ap = static_cast<int *>(A->p);
+      int        *Ai = static_cast<int *>(A->i);
+      double     *Ax = static_cast<double *>(A->x);
+      std::size_t k  = 0;
       for (unsigned int i = 0; i < n; ++i)
         {
           Ap[i] = k;
@@ -103,7 +108,7 @@ namespace porofrac
                 ++k;
               }
         }
-      Ap[n] = k;
+      Ap[n]        = k;
       data->factor = cholmod_analyze(A, &data->common);
       cholmod_factorize(A, data->factor, &data->common);
       const int status = data->common.status;
@@ -158,8 +163,8 @@ namespace porofrac
       for (const auto &b : data->Y)
         for (unsigned int a = 0; a < b.columns.size(); ++a)
           {
-            const double *y = b.values.data() + std::size_t(a) * b.n_rows;
-            const double *x = z.data() + b.first_row;
+            const double *y   = b.values.data() + std::size_t(a) * b.n_rows;
+            const double *x   = z.data() + b.first_row;
             double        sum = 0;
             for (int i = 0; i < b.n_rows; ++i)
               sum += y[i] * x[i];
@@ -195,19 +200,19 @@ namespace porofrac
     std::size_t
     SparseCholesky::inverse_gram(
       const std::vector<std::vector<std::pair<unsigned int, double>>> &columns,
-      FullMatrix<double>                                             &G) const
+      FullMatrix<double>                                              &G) const
     {
       const cholmod_factor *L = data->factor;
       data->Y.clear();
       Assert(L && L->is_super && L->is_ll, ExcInternalError());
-      const int     nsuper = L->nsuper;
-      const int    *super  = static_cast<const int *>(L->super);
-      const int    *pi     = static_cast<const int *>(L->pi);
-      const int    *px     = static_cast<const int *>(L->px);
-      const int    *Ls     = static_cast<const int *>(L->s);
-      const double *Lx     = static_cast<const double *>(L->x);
-      const int    *perm   = static_cast<const int *>(L->Perm);
-      const unsigned int m = columns.size();
+      const int          nsuper = L->nsuper;
+      const int         *super  = static_cast<const int *>(L->super);
+      const int         *pi     = static_cast<const int *>(L->pi);
+      const int         *px     = static_cast<const int *>(L->px);
+      const int         *Ls     = static_cast<const int *>(L->s);
+      const double      *Lx     = static_cast<const double *>(L->x);
+      const int         *perm   = static_cast<const int *>(L->Perm);
+      const unsigned int m      = columns.size();
 
       // Supernode of each (permuted) column of L, and the supernodal elimination tree: the
       // parent of s holds the first row of s below its diagonal block.
@@ -234,10 +239,10 @@ namespace porofrac
         for (unsigned int k = 0; k < m; ++k)
           for (const auto &entry : columns[k])
             for (int s = supernode_of[row_of[entry.first]]; s != -1 && mark[s] != int(k);
-                 s = parent[s])
+                 s     = parent[s])
               {
-                mark[s] = k;
-                reaching[s].push_back(k);
+                    mark[s] = k;
+                    reaching[s].push_back(k);
               }
       }
       const auto position = [&](const int s, const unsigned int k) {
@@ -247,7 +252,7 @@ namespace porofrac
       // Dense blocks of Y (rows of supernode s x columns reaching it, column-major), allocated
       // when first touched and released once s is done.
       std::vector<std::vector<double>> block(nsuper);
-      const auto block_of = [&](const int s) -> std::vector<double> & {
+      const auto                       block_of = [&](const int s) -> std::vector<double>                       &{
         if (block[s].empty())
           block[s].assign(std::size_t(super[s + 1] - super[s]) * reaching[s].size(), 0.);
         return block[s];
@@ -259,7 +264,7 @@ namespace porofrac
             block_of(s)[(j - super[s]) + position(s, k) * n_columns] += value;
           }
 
-      std::vector<double> Gd(std::size_t(m) * m, 0.), update, gram;
+      std::vector<double>         Gd(std::size_t(m) * m, 0.), update, gram;
       std::vector<std::ptrdiff_t> target_column;
       std::size_t                 nonzeros = 0;
       for (int s = 0; s < nsuper; ++s)
@@ -269,8 +274,8 @@ namespace porofrac
             continue;
           const types::blas_int ncol = super[s + 1] - super[s], nrow = pi[s + 1] - pi[s],
                                 nbelow = nrow - ncol, kk = cols.size();
-          std::vector<double> &Y     = block_of(s);
-          const double        *L_s   = Lx + px[s];
+          std::vector<double> &Y   = block_of(s);
+          const double        *L_s = Lx + px[s];
           const double         one = 1., zero = 0.;
           // Y_s = L_ss^{-1} Y_s
           dtrsm_("L", "L", "N", "N", &ncol, &kk, &one, L_s, &nrow, Y.data(), &ncol);
@@ -290,8 +295,19 @@ namespace porofrac
           if (nbelow > 0)
             {
               update.resize(std::size_t(nbelow) * kk);
-              gemm("N", "N", &nbelow, &kk, &ncol, &one, L_s + ncol, &nrow, Y.data(), &ncol,
-                   &zero, update.data(), &nbelow);
+              gemm("N",
+                   "N",
+                   &nbelow,
+                   &kk,
+                   &ncol,
+                   &one,
+                   L_s + ncol,
+                   &nrow,
+                   Y.data(),
+                   &ncol,
+                   &zero,
+                   update.data(),
+                   &nbelow);
               const int *rows = Ls + pi[s] + ncol;
               for (types::blas_int i = 0; i < nbelow;)
                 {

@@ -42,14 +42,13 @@ main()
     for (const double pc : {-1e6, 1e3, 5e7, 2e8, 8e8})
       {
         const double pw = 1e6, h = 1e-6 * std::max(pw, std::abs(pc));
-        const auto   d  = coupling::equivalent_pressure_derivatives(matrix, pw, pw + pc, with_energy);
+        const auto d = coupling::equivalent_pressure_derivatives(matrix, pw, pw + pc, with_energy);
         const double fd_w = (coupling::equivalent_pressure(matrix, pw + h, pw + pc, with_energy) -
                              coupling::equivalent_pressure(matrix, pw - h, pw + pc, with_energy)) /
                             (2 * h);
-        const double fd_nw =
-          (coupling::equivalent_pressure(matrix, pw, pw + pc + h, with_energy) -
-           coupling::equivalent_pressure(matrix, pw, pw + pc - h, with_energy)) /
-          (2 * h);
+        const double fd_nw = (coupling::equivalent_pressure(matrix, pw, pw + pc + h, with_energy) -
+                              coupling::equivalent_pressure(matrix, pw, pw + pc - h, with_energy)) /
+                             (2 * h);
         worst = std::max({worst, std::abs(d[0] - fd_w), std::abs(d[1] - fd_nw)});
       }
   std::cout << std::setprecision(2) << "derivatives against central differences below 1e-6: "

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The fixed-point solvers of the coupling on maps whose fixed points are known:
-// 1. a contraction g(x) = A x + b + 0.1 sin(x) (Lipschitz constant at most 0.8): plain iterations and
+// 1. a contraction g(x) = A x + b + 0.1 sin(x) (Lipschitz constant at most 0.8): plain iterations
+// and
 //    Newton-Krylov converge to the same point, Newton-Krylov in far fewer iterations;
 // 2. an expansive affine map g(x) = -1.5 x + c (plain iterations diverge): Newton-Krylov finds
 //    x* = c / 2.5 in one Newton step (the second iteration only confirms it), since the
@@ -51,7 +52,8 @@ main()
   std::cout << "contraction: fixed point converged " << plain.converged << " in "
             << plain.iterations << " iterations" << std::endl
             << "contraction: Newton-Krylov converged " << nk.converged << " in " << nk.iterations
-            << " Newton iterations, fewer than fixed point: " << (nk.iterations < plain.iterations) << std::endl
+            << " Newton iterations, fewer than fixed point: " << (nk.iterations < plain.iterations)
+            << std::endl
             << "contraction: |x - g(x)| at the Newton-Krylov solution: "
             << (check.l2_norm() < 1e-9 ? "below 1e-9" : "too large") << std::endl
             << "contraction: |x_NK - x_FP| / |x_FP| below 1e-8: "

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The coupled Newton-Krylov, Anderson and plain fixed-point iterations (and the fixed point on u) solve
-// the same discrete problem, whether each step starts from the last state or from the
+// The coupled Newton-Krylov, Anderson and plain fixed-point iterations (and the fixed point on u)
+// solve the same discrete problem, whether each step starts from the last state or from the
 // extrapolation of the last two: on the fractured drainage scene with contact (energy_drainage.prm,
 // 15 steps), the final normal jumps and multipliers of every fracture face agree to a fraction
 // of the coupling tolerance. Printed: the largest difference of [u]_n relative to max |[u]_n|
@@ -32,9 +32,9 @@ namespace
   std::vector<Face>
   final_faces(const std::string &file)
   {
-    std::ifstream             in(file);
-    std::string               line;
-    std::vector<std::string>  rows;
+    std::ifstream            in(file);
+    std::string              line;
+    std::vector<std::string> rows;
     std::getline(in, line);
     while (std::getline(in, line))
       rows.push_back(line);
@@ -82,10 +82,10 @@ namespace
     bool   same_states = a.size() == b.size();
     for (unsigned int i = 0; i < a.size() && i < b.size(); ++i)
       {
-        jmax = std::max(jmax, std::abs(a[i].jump_n));
-        lmax = std::max(lmax, std::abs(a[i].lambda_n));
-        dj   = std::max(dj, std::abs(a[i].jump_n - b[i].jump_n));
-        dl   = std::max(dl, std::abs(a[i].lambda_n - b[i].lambda_n));
+        jmax        = std::max(jmax, std::abs(a[i].jump_n));
+        lmax        = std::max(lmax, std::abs(a[i].lambda_n));
+        dj          = std::max(dj, std::abs(a[i].jump_n - b[i].jump_n));
+        dl          = std::max(dl, std::abs(a[i].lambda_n - b[i].lambda_n));
         same_states = same_states && a[i].state == b[i].state;
       }
     std::cout << label << ": " << a.size() << " faces, [u]_n and lambda_n agree to 1e-4: "

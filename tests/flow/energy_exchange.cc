@@ -8,11 +8,11 @@
 // 3. Mass conservation when the aperture and porosity_base change between steps
 //    (begin_time_step() stores the old pore volumes): per-step mass defect below 1e-10.
 // 4. A failed step returns converged = false (non-finite state), without an exception.
-#include "flow_test_tools.h"
-
 #include <cmath>
 #include <iostream>
 #include <limits>
+
+#include "flow_test_tools.h"
 
 using namespace porofrac;
 using namespace dealii;
@@ -23,7 +23,8 @@ main()
   ConditionalOStream quiet(std::cout, false);
   bool               ok = true;
   {
-    const auto mesh = flow_test::unit_square("1: (0.0, 0.5) (1.0, 0.5)", 0.1, 0.1, "frontal-delaunay");
+    const auto mesh =
+      flow_test::unit_square("1: (0.0, 0.5) (1.0, 0.5)", 0.1, 0.1, "frontal-delaunay");
     flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0, 1});
     flow_test::set_data(grid);
     flow::TwoPhaseSolver<2> solver(grid, flow_test::corey_rocks(), flow::NewtonParameters());
@@ -33,13 +34,13 @@ main()
       p = {{1.5e5, 1.5e5}};
     solver.apply_dirichlet(solver.state);
     solver.begin_time_step();
-    const double dt = 1e6;
+    const double dt        = 1e6;
     const bool   converged = solver.solve_time_step(dt, quiet).converged;
-    const auto   e = solver.energy_exchange(solver.state, dt);
-    const double Q = (1e-12 + 1e-9 / 12.) / 1e-3 * 1e5; // m^2/s per unit depth
-    const double expected = dt * Q * 1e5;
-    const bool   work_ok = converged && std::abs(e.boundary_work - expected) < 1e-8 * expected;
-    const bool   diss_ok = e.dissipation > 0.5 * expected && e.dissipation < e.boundary_work;
+    const auto   e         = solver.energy_exchange(solver.state, dt);
+    const double Q         = (1e-12 + 1e-9 / 12.) / 1e-3 * 1e5; // m^2/s per unit depth
+    const double expected  = dt * Q * 1e5;
+    const bool   work_ok   = converged && std::abs(e.boundary_work - expected) < 1e-8 * expected;
+    const bool   diss_ok   = e.dissipation > 0.5 * expected && e.dissipation < e.boundary_work;
     std::cout << "boundary work dt Q (p_in - p_out) of linear flow: " << (work_ok ? "yes" : "NO")
               << std::endl
               << "0.5 boundary work < dissipation < boundary work: " << (diss_ok ? "yes" : "NO")
@@ -53,14 +54,14 @@ main()
     flow::TpfaGrid<2> grid(*mesh, false, {}, {});
     flow_test::set_data(grid);
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
-    std::vector<double> phi_base(grid.n_matrix_cells, 0.2), p_E_ref(grid.n_matrix_cells, 1e5);
+    std::vector<double>     phi_base(grid.n_matrix_cells, 0.2), p_E_ref(grid.n_matrix_cells, 1e5);
     solver.set_biot_storage(phi_base, p_E_ref, 1e-7, true);
     // Gas (p_c = 2e4 Pa) in the left quarter, water elsewhere.
     for (unsigned int i = 0; i < grid.n_nodes(); ++i)
       solver.state[i] = grid.nodes[i].centre[0] < 0.25 ? std::array<double, 2>{{1e5, 1.2e5}} :
                                                          std::array<double, 2>{{1e5, 1e5}};
-    double       identity_max = 0, dissipation = 0;
-    bool         converged    = true;
+    double identity_max = 0, dissipation = 0;
+    bool   converged = true;
     for (unsigned int step = 0; step < 4; ++step)
       {
         std::vector<double> pv_old(grid.n_nodes());
@@ -73,10 +74,10 @@ main()
         double     sum  = e.dissipation;
         for (unsigned int i = 0; i < grid.n_nodes(); ++i)
           {
-            const unsigned int rock = grid.nodes[i].rock;
-            const double S = solver.saturation(solver.state, i, flow::Rock(rock));
-            const double S_old = solver.saturation(solver.old_state, i, flow::Rock(rock));
-            const double PV = solver.pore_volume(solver.state, i);
+            const unsigned int rock  = grid.nodes[i].rock;
+            const double       S     = solver.saturation(solver.state, i, flow::Rock(rock));
+            const double       S_old = solver.saturation(solver.old_state, i, flow::Rock(rock));
+            const double       PV    = solver.pore_volume(solver.state, i);
             sum += solver.state[i][1] * (PV * S - pv_old[i] * S_old) +
                    solver.state[i][0] * (PV * (1 - S) - pv_old[i] * (1 - S_old));
           }
@@ -93,15 +94,15 @@ main()
     flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0});
     flow_test::set_data(grid);
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
-    const double pc_in = rocks[0].saturation.inverse(0.5, "test");
-    solver.matrix_dirichlet   = {{0, {{2e5 - pc_in, 2e5}}}, {1, {{1e5, 1e5}}}};
-    solver.fracture_dirichlet = {{0, {{2e5 - rocks[1].saturation.inverse(0.9, "test"), 2e5}}}};
+    const double            pc_in = rocks[0].saturation.inverse(0.5, "test");
+    solver.matrix_dirichlet       = {{0, {{2e5 - pc_in, 2e5}}}, {1, {{1e5, 1e5}}}};
+    solver.fracture_dirichlet     = {{0, {{2e5 - rocks[1].saturation.inverse(0.9, "test"), 2e5}}}};
     for (auto &p : solver.state)
       p = {{1e5, 1e5}};
     solver.apply_dirichlet(solver.state);
     std::vector<double> phi_base(grid.n_matrix_cells, 0.2), p_E_ref(grid.n_matrix_cells, 1e5);
     solver.set_biot_storage(phi_base, p_E_ref, 1e-7, false);
-    double mass_max = 0;
+    double mass_max  = 0;
     bool   converged = true;
     for (unsigned int step = 0; step < 5; ++step)
       {
@@ -124,7 +125,7 @@ main()
 
     solver.begin_time_step();
     solver.state[grid.n_matrix_cells][0] = std::numeric_limits<double>::quiet_NaN();
-    bool failed = false;
+    bool failed                          = false;
     try
       {
         failed = !solver.solve_time_step(20., quiet).converged;

@@ -3,10 +3,10 @@
 // matrix, fractures, interfaces and intersection nodes, the same pressures on every Dirichlet
 // boundary. Ten implicit Euler steps must take zero Newton iterations and leave every pressure
 // unchanged.
-#include "flow_test_tools.h"
-
 #include <cmath>
 #include <iostream>
+
+#include "flow_test_tools.h"
 
 using namespace porofrac;
 using namespace dealii;
@@ -18,7 +18,7 @@ main()
     "1: (0.1, 0.5) (0.9, 0.5); 2: (0.3, 0.2) (0.3, 0.8); 3: (0.7, 0.5) (0.7, 0.2)", 0.15, 0.075);
   flow::TpfaGrid<2> grid(*mesh, false, {0, 1, 2, 3}, {});
   flow_test::set_data(grid);
-  flow::TwoPhaseSolver<2> solver(grid, flow_test::corey_rocks(), flow::NewtonParameters());
+  flow::TwoPhaseSolver<2>     solver(grid, flow_test::corey_rocks(), flow::NewtonParameters());
   const std::array<double, 2> p = {{1e5, 1.05e5}};
   solver.matrix_dirichlet       = {{0, p}, {1, p}, {2, p}, {3, p}};
   for (auto &q : solver.state)

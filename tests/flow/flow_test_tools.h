@@ -18,7 +18,9 @@ namespace flow_test
   using namespace porofrac;
 
   inline std::unique_ptr<geometry::CutMesh<2>>
-  unit_square(const std::string &fractures, const double h = 0.1, const double hf = 0.05,
+  unit_square(const std::string &fractures,
+              const double       h         = 0.1,
+              const double       hf        = 0.05,
               const std::string &algorithm = "delaunay")
   {
     geometry::GeometryParameters prm;

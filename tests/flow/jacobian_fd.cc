@@ -6,10 +6,10 @@
 // the Biot storage of eq. (11d) (porosity depending on p^E, with and without U).
 #include <deal.II/lac/full_matrix.h>
 
-#include "flow_test_tools.h"
-
 #include <cmath>
 #include <iostream>
+
+#include "flow_test_tools.h"
 
 using namespace porofrac;
 using namespace dealii;
@@ -17,10 +17,10 @@ using namespace dealii;
 int
 main()
 {
-  const auto mesh = flow_test::unit_square(flow_test::xt_network, 0.2, 0.1);
+  const auto        mesh = flow_test::unit_square(flow_test::xt_network, 0.2, 0.1);
   flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0});
   flow_test::set_data(grid);
-  auto rocks = flow_test::corey_rocks();
+  auto rocks                     = flow_test::corey_rocks();
   rocks[0].relative_permeability = flow::RelativePermeability::van_genuchten_mualem(0.5, 0.1, 0.05);
   flow::NewtonParameters newton;
   newton.entry_slope = false;
@@ -62,7 +62,7 @@ main()
           const unsigned int col = solver.dof(i, phase);
           if (col == numbers::invalid_unsigned_int)
             continue;
-          const double h = 1e-2;
+          const double h  = 1e-2;
           auto         sp = state, sm = state;
           sp[i][phase] += h;
           sm[i][phase] -= h;
@@ -71,7 +71,8 @@ main()
           for (unsigned int row = 0; row < r0.size(); ++row)
             {
               const double fd = (rp(row) - rm(row)) / (2 * h);
-              const double an = solver.sparsity.exists(row, col) ? solver.jacobian.el(row, col) : 0.;
+              const double an =
+                solver.sparsity.exists(row, col) ? solver.jacobian.el(row, col) : 0.;
               if (fd != 0 && !solver.sparsity.exists(row, col))
                 std::cout << "FAILED: entry (" << row << ", " << col << ") missing from the pattern"
                           << std::endl;
@@ -104,22 +105,24 @@ main()
           const auto  &law = rocks[0].saturation;
           const double pc  = state[K][1] - state[K][0];
           const double S   = law.saturation(pc);
-          const double pE  = (1 - S) * state[K][0] + S * state[K][1] -
-                            (capillary_energy ? law.energy(pc) : 0.);
-          phi_err = std::max({phi_err, std::abs(solver.equivalent_pressure(state, K) - pE) / 1e5,
-                              std::abs(solver.porosity(state, K) -
-                                       (phi_base[K] + (pE - p_E_ref[K]) * 1e-6))});
+          const double pE =
+            (1 - S) * state[K][0] + S * state[K][1] - (capillary_energy ? law.energy(pc) : 0.);
+          phi_err = std::max(
+            {phi_err,
+             std::abs(solver.equivalent_pressure(state, K) - pE) / 1e5,
+             std::abs(solver.porosity(state, K) - (phi_base[K] + (pE - p_E_ref[K]) * 1e-6))});
         }
       biot_ok = biot_ok && rel_biot < 1e-6 && phi_err < 1e-12;
       std::cout << "Biot storage, capillary energy " << (capillary_energy ? "on" : "off")
                 << ": max |J - J_FD| / max |J| below 1e-6: " << (rel_biot < 1e-6 ? "yes" : "NO")
-                << ", porosity and p^E as defined: " << (phi_err < 1e-12 ? "yes" : "NO") << std::endl;
+                << ", porosity and p^E as defined: " << (phi_err < 1e-12 ? "yes" : "NO")
+                << std::endl;
     }
   Vector<double> r0;
   solver.assemble(state, old, dt, r0, nullptr);
 
   // With the entry slope the Jacobian differs only where p_c <= 0: identical here.
-  flow::NewtonParameters n2;
+  flow::NewtonParameters  n2;
   flow::TwoPhaseSolver<2> solver2(grid, rocks, n2);
   solver2.matrix_dirichlet   = solver.matrix_dirichlet;
   solver2.fracture_dirichlet = solver.fracture_dirichlet;
@@ -129,7 +132,7 @@ main()
   Vector<double> r2;
   solver2.assemble(state, old, dt, r2, &solver2.jacobian);
   r2 -= r0;
-  std::cout << "residual independent of the Jacobian mode: " << (r2.linfty_norm() == 0 ? "yes" : "NO")
-            << std::endl;
+  std::cout << "residual independent of the Jacobian mode: "
+            << (r2.linfty_norm() == 0 ? "yes" : "NO") << std::endl;
   return rel < 1e-6 && biot_ok && r2.linfty_norm() == 0 ? 0 : 1;
 }

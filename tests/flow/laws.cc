@@ -79,19 +79,30 @@ main()
   check("Corey inverse", corey.inverse(0.35, "x"), 86.157e6, 1e-5 * 86.157e6);
   for (const double pc : {1e6, 8.6e7, 4e8})
     {
-      check("Corey U vs quadrature at " + std::to_string(pc), corey.energy(pc),
-            energy_quadrature(corey, pc), 1e-8 * pc);
-      check("Corey S' vs FD", corey.derivative(pc) * 2e8,
-            fd([&](double x) { return corey.saturation(x); }, pc, 1e3) * 2e8, 1e-7);
-      check("Corey U' = pc S'", fd([&](double x) { return corey.energy(x); }, pc, 1e3),
-            pc * corey.derivative(pc), 1e-6);
+      check("Corey U vs quadrature at " + std::to_string(pc),
+            corey.energy(pc),
+            energy_quadrature(corey, pc),
+            1e-8 * pc);
+      check("Corey S' vs FD",
+            corey.derivative(pc) * 2e8,
+            fd([&](double x) { return corey.saturation(x); }, pc, 1e3) * 2e8,
+            1e-7);
+      check("Corey U' = pc S'",
+            fd([&](double x) { return corey.energy(x); }, pc, 1e3),
+            pc * corey.derivative(pc),
+            1e-6);
       check("vG U vs quadrature", vg.energy(pc), energy_quadrature(vg, pc), 1e-6 * pc);
-      check("vG S' vs FD", vg.derivative(pc) * 1.5e7,
-            fd([&](double x) { return vg.saturation(x); }, pc, 1e2) * 1.5e7, 1e-6);
+      check("vG S' vs FD",
+            vg.derivative(pc) * 1.5e7,
+            fd([&](double x) { return vg.saturation(x); }, pc, 1e2) * 1.5e7,
+            1e-6);
       check("vG inverse", vg.inverse(vg.saturation(pc), "x"), pc, 1e-9 * pc);
     }
   // Fracture Corey law of 5.3: p_c for s = 1 - 1e-8 (specs.md 1.2).
-  check("Corey fracture inverse", SaturationLaw::corey(1e2).inverse(1 - 1e-8, "x"), 1842.068, 1e-6 * 1842);
+  check("Corey fracture inverse",
+        SaturationLaw::corey(1e2).inverse(1 - 1e-8, "x"),
+        1842.068,
+        1e-6 * 1842);
 
   const RelativePermeability vgm = RelativePermeability::van_genuchten_mualem(0.328, 0.35, 0.);
   const RelativePermeability lin = RelativePermeability::linear();
@@ -102,24 +113,32 @@ main()
   {
     // s = 0.5: k_rw = sqrt(.5) (1 - (1 - .5^(1/q))^q)^2
     const double s = 0.5, q = 0.328, B = 1 - std::pow(s, 1 / q);
-    check("VGM k_rw(s=1/2)", vgm.value(0, 1 - 0.35 - 0.5 * 0.65),
-          std::sqrt(s) * std::pow(1 - std::pow(B, q), 2), 1e-14);
-    check("VGM k_rnw(s=1/2)", vgm.value(1, 1 - 0.35 - 0.5 * 0.65),
-          std::sqrt(1 - s) * std::pow(B, 2 * q), 1e-14);
+    check("VGM k_rw(s=1/2)",
+          vgm.value(0, 1 - 0.35 - 0.5 * 0.65),
+          std::sqrt(s) * std::pow(1 - std::pow(B, q), 2),
+          1e-14);
+    check("VGM k_rnw(s=1/2)",
+          vgm.value(1, 1 - 0.35 - 0.5 * 0.65),
+          std::sqrt(1 - s) * std::pow(B, 2 * q),
+          1e-14);
   }
   for (const double snw : {0.05, 0.3, 0.6})
     for (unsigned int phase = 0; phase < 2; ++phase)
       {
         check("VGM dk_r/ds FD phase " + std::to_string(phase) + " s_nw " + std::to_string(snw),
               vgm.derivative(phase, snw),
-              fd([&](double x) { return vgm.value(phase, x); }, snw, 1e-7), 1e-6);
-        check("linear dk_r/ds FD", lin.derivative(phase, snw),
-              fd([&](double x) { return lin.value(phase, x); }, snw, 1e-7), 1e-8);
+              fd([&](double x) { return vgm.value(phase, x); }, snw, 1e-7),
+              1e-6);
+        check("linear dk_r/ds FD",
+              lin.derivative(phase, snw),
+              fd([&](double x) { return lin.value(phase, x); }, snw, 1e-7),
+              1e-8);
       }
   check("Kozeny-Carman at phi0 = K0", kozeny_carman(5e-20, 0.15, 0.15) * 1e20, 5., 1e-14);
   check("Kozeny-Carman derivative FD",
         kozeny_carman_derivative(5e-20, 0.15, 0.2) * 1e20,
-        fd([](double x) { return kozeny_carman(5e-20, 0.15, x) * 1e20; }, 0.2, 1e-6), 1e-7);
+        fd([](double x) { return kozeny_carman(5e-20, 0.15, x) * 1e20; }, 0.2, 1e-6),
+        1e-7);
 
   RockType rock;
   rock.relative_permeability = vgm;

@@ -7,11 +7,11 @@
 // Asserted: C equals B to round-off (the reference pressure is a gauge: pressures to 1e-9
 // relative, saturations to 1e-10); B agrees with A to the size of A's gas floor (saturations to
 // 1e-7; measured 8e-9); the bound holds (p_c >= 0 at every free node of B) and gas did enter.
-#include "flow_test_tools.h"
-
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+
+#include "flow_test_tools.h"
 
 using namespace porofrac;
 using namespace dealii;
@@ -22,10 +22,10 @@ namespace
   {
     std::vector<std::array<double, 2>> pressures; // absolute (w, nw)
     std::vector<double>                saturations;
-    double                             min_pc      = 0;
-    double                             gas_volume  = 0;
-    unsigned int                       iterations  = 0;
-    bool                               converged   = true;
+    double                             min_pc     = 0;
+    double                             gas_volume = 0;
+    unsigned int                       iterations = 0;
+    bool                               converged  = true;
   };
 
   Run
@@ -66,7 +66,8 @@ namespace
     r.min_pc = std::numeric_limits<double>::max();
     for (unsigned int i = 0; i < grid.n_nodes(); ++i)
       {
-        r.pressures.push_back({{solver.pressure(solver.state, i, 0), solver.pressure(solver.state, i, 1)}});
+        r.pressures.push_back(
+          {{solver.pressure(solver.state, i, 0), solver.pressure(solver.state, i, 1)}});
         const flow::Rock rock = grid.nodes[i].rock == 0 ? flow::matrix_rock : flow::fracture_rock;
         r.saturations.push_back(solver.saturation(solver.state, i, rock));
         if (!grid.is_dirichlet(i))
@@ -85,8 +86,9 @@ namespace
       {
         ds = std::max(ds, std::abs(a.saturations[i] - b.saturations[i]));
         for (unsigned int k = 0; k < 2; ++k)
-          dp = std::max(dp, std::abs(a.pressures[i][k] - b.pressures[i][k]) /
-                              std::max(std::abs(a.pressures[i][k]), 1e5));
+          dp = std::max(dp,
+                        std::abs(a.pressures[i][k] - b.pressures[i][k]) /
+                          std::max(std::abs(a.pressures[i][k]), 1e5));
       }
     return {{ds, dp}};
   }
@@ -109,7 +111,8 @@ main()
             << std::endl
             << "bound + no gas floor agrees with entry slope + floor (S to 1e-7): "
             << (agree ? "yes" : "NO") << std::endl
-            << "p_c >= 0 at every free node with the bound: " << (bound ? "yes" : "NO") << std::endl;
+            << "p_c >= 0 at every free node with the bound: " << (bound ? "yes" : "NO")
+            << std::endl;
   if (std::getenv("V"))
     std::cout << bc[0] << ' ' << bc[1] << ' ' << ab[0] << ' ' << ab[1] << ' ' << a.min_pc << ' '
               << b.gas_volume << " iterations " << a.iterations << ' ' << b.iterations << ' '

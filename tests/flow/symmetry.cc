@@ -5,11 +5,11 @@
 // volumes, to round-off, after several implicit Euler steps.
 #include <porofrac/geometry/fracture_network.h>
 
-#include "flow_test_tools.h"
-
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+
+#include "flow_test_tools.h"
 
 using namespace porofrac;
 using namespace dealii;
@@ -23,14 +23,16 @@ namespace
   };
 
   Result
-  run(const geometry::CutMesh<2> &mesh, const types::boundary_id inlet, const types::boundary_id outlet)
+  run(const geometry::CutMesh<2> &mesh,
+      const types::boundary_id    inlet,
+      const types::boundary_id    outlet)
   {
     flow::TpfaGrid<2> grid(mesh, false, {inlet, outlet}, {});
     flow_test::set_data(grid);
     const auto              rocks = flow_test::corey_rocks();
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
-    const double pc_in = rocks[0].saturation.inverse(0.5, "test");
-    solver.matrix_dirichlet = {{inlet, {{2e5 - pc_in, 2e5}}}, {outlet, {{1e5, 1e5}}}};
+    const double            pc_in = rocks[0].saturation.inverse(0.5, "test");
+    solver.matrix_dirichlet       = {{inlet, {{2e5 - pc_in, 2e5}}}, {outlet, {{1e5, 1e5}}}};
     for (auto &p : solver.state)
       p = {{1e5, 1e5}};
     solver.apply_dirichlet(solver.state);
@@ -65,8 +67,8 @@ main()
   prm.global_refinements  = 0;
   prm.delaunay_flips      = false;
   prm.algorithm           = "delaunay";
-  auto raw    = geometry::mesh_network(geometry::network_from_parameters(prm), prm);
-  auto mirror = raw;
+  auto raw                = geometry::mesh_network(geometry::network_from_parameters(prm), prm);
+  auto mirror             = raw;
   for (auto &v : mirror.vertices)
     v[0] = 1. - v[0];
   for (auto &f : mirror.boundary_faces)
@@ -81,8 +83,9 @@ main()
   double       diff = 0;
   for (unsigned int i = 0; i < a.values.size(); ++i)
     diff = std::max(diff, std::abs(a.values[i] - b.values[i]) / std::abs(a.values[i]));
-  const double dv = std::max(std::abs(a.volumes[0] - b.volumes[0]), std::abs(a.volumes[1] - b.volumes[1])) /
-                    (a.volumes[0] + a.volumes[1]);
+  const double dv =
+    std::max(std::abs(a.volumes[0] - b.volumes[0]), std::abs(a.volumes[1] - b.volumes[1])) /
+    (a.volumes[0] + a.volumes[1]);
   std::cout << "non-wetting phase entered: " << (a.volumes[1] > 1e-3 ? "yes" : "NO") << std::endl
             << "mirror fields equal to 1e-9: " << (diff < 1e-9 ? "yes" : "NO") << std::endl
             << "mirror phase volumes equal to 1e-10: " << (dv < 1e-10 ? "yes" : "NO") << std::endl;

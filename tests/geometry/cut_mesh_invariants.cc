@@ -13,10 +13,11 @@
 //   tangent, abscissae are continuous along each fracture, tips lie half a face from the nearest
 //   face centre (none for a fracture through the domain);
 // - a P2 field that jumps across a fracture keeps its jump exactly.
+#include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/geometry/cut_mesh.h>
@@ -25,8 +26,8 @@
 
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <map>
 
 using namespace dealii;
@@ -90,9 +91,9 @@ namespace
     std::map<types::boundary_id, double> side_length;
     struct SideFace
     {
-      Point<2>       centre;
-      Tensor<1, 2>   normal;
-      unsigned int   cell;
+      Point<2>           centre;
+      Tensor<1, 2>       normal;
+      unsigned int       cell;
       types::boundary_id id;
     };
     std::vector<SideFace> side_faces;
@@ -103,11 +104,12 @@ namespace
             const auto face = cell->face(f);
             side_length[face->boundary_id()] += face->measure();
             Tensor<1, 2> t = face->vertex(1) - face->vertex(0), n;
-            n[0] = t[1] / t.norm();
-            n[1] = -t[0] / t.norm();
+            n[0]           = t[1] / t.norm();
+            n[1]           = -t[0] / t.norm();
             if ((face->center() - cell->center()) * n < 0)
               n *= -1;
-            side_faces.push_back({face->center(), n, cell->active_cell_index(), face->boundary_id()});
+            side_faces.push_back(
+              {face->center(), n, cell->active_cell_index(), face->boundary_id()});
           }
     double worst_length = 0;
     for (const auto &f : network.fractures)
@@ -116,9 +118,9 @@ namespace
         for (unsigned int k = 0; k + 1 < f.points.size(); ++k)
           length += f.points[k].distance(f.points[k + 1]);
         for (const Side side : {plus, minus})
-          worst_length = std::max(worst_length,
-                                  std::abs(side_length[fracture_boundary_id(f.id, side)] - length) /
-                                    length);
+          worst_length =
+            std::max(worst_length,
+                     std::abs(side_length[fracture_boundary_id(f.id, side)] - length) / length);
       }
     std::cout << "  max relative error of side lengths: " << worst_length << std::endl;
 
@@ -143,14 +145,15 @@ namespace
       {
         bad_sides += ((f.cell[plus]->center() - f.centre) * f.normal >= 0) ||
                      ((f.cell[minus]->center() - f.centre) * f.normal <= 0);
-        bad_frames += std::abs(f.normal.norm() - 1) > 1e-12 || std::abs(f.normal[0] + f.tangent[1]) > 1e-12 ||
+        bad_frames += std::abs(f.normal.norm() - 1) > 1e-12 ||
+                      std::abs(f.normal[0] + f.tangent[1]) > 1e-12 ||
                       std::abs(f.normal[1] - f.tangent[0]) > 1e-12;
         nearest_tip = std::min(nearest_tip, f.distance_to_tip / f.measure);
       }
     for (const auto &[id, faces] : mesh.faces_of_fracture)
       for (unsigned int k = 0; k < faces.size(); ++k)
         {
-          const auto &f = mesh.fracture_faces[faces[k]];
+          const auto  &f = mesh.fracture_faces[faces[k]];
           const double expected_begin =
             k == 0 ? 0. : mesh.fracture_faces[faces[k - 1]].abscissa_end;
           bad_abscissae += std::abs(f.abscissa_begin - expected_begin) > 1e-12 ||
@@ -166,13 +169,12 @@ namespace
     unsigned int                        wrong_copies = 0;
     for (const auto &node : mesh.fracture_nodes)
       {
-        static const char *names[] = {"tip", "interior", "corner", "junction", "intersection",
-                                      "boundary"};
+        static const char *names[] = {
+          "tip", "interior", "corner", "junction", "intersection", "boundary"};
         ++n_type[names[static_cast<int>(node.type)]];
         bool distinct_same_place = true;
         for (unsigned int i = 0; i < node.copies.size(); ++i)
-          distinct_same_place &=
-            tria.get_vertices()[node.copies[i]].distance(node.location) == 0.;
+          distinct_same_place &= tria.get_vertices()[node.copies[i]].distance(node.location) == 0.;
         if (node.copies.size() != expected_copies(node) || !distinct_same_place)
           ++wrong_copies;
       }
@@ -199,10 +201,10 @@ namespace
     prm.delaunay_flips      = false;
     const auto mesh         = make_cut_mesh<2>(prm);
 
-    FE_SimplexP<2>  fe(2);
-    DoFHandler<2>   dof_handler(mesh->triangulation);
+    FE_SimplexP<2> fe(2);
+    DoFHandler<2>  dof_handler(mesh->triangulation);
     dof_handler.distribute_dofs(fe);
-    Vector<double>  u(dof_handler.n_dofs());
+    Vector<double>                       u(dof_handler.n_dofs());
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -211,18 +213,18 @@ namespace
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
-            const Point<2> x = mesh->mapping().transform_unit_to_real_cell(
-              cell, fe.get_unit_support_points()[i]);
+            const Point<2> x =
+              mesh->mapping().transform_unit_to_real_cell(cell, fe.get_unit_support_points()[i]);
             u[dofs[i]] = x[0] * x[1] + above;
           }
       }
     const QGaussSimplex<1> quadrature(3);
-    FEFaceValues<2>        fv(mesh->mapping(), fe, quadrature, update_values | update_quadrature_points);
-    double                 worst = 0;
+    FEFaceValues<2> fv(mesh->mapping(), fe, quadrature, update_values | update_quadrature_points);
+    double          worst = 0;
     for (const auto &face : mesh->fracture_faces)
       {
-        std::array<std::vector<double>, 2>     values;
-        std::array<std::vector<Point<2>>, 2>   points;
+        std::array<std::vector<double>, 2>   values;
+        std::array<std::vector<Point<2>>, 2> points;
         for (const Side side : {plus, minus})
           {
             const typename DoFHandler<2>::active_cell_iterator cell(&mesh->triangulation,
@@ -256,7 +258,8 @@ main()
     {"corner", "(0, 0) (1, 1)", "1: (0.2, 0.3) (0.5, 0.6) (0.8, 0.4)", 1.},
     {"tip on the boundary", "(0, 0) (1, 1)", "1: (0.5, 0.5) (1, 0.5)", 1.},
     {"through fracture", "(0, 0) (1, 1)", "1: (0, 0.4) (1, 0.6)", 1.},
-    {"six fractures", "(0, 0) (2, 1)",
+    {"six fractures",
+     "(0, 0) (2, 1)",
      "1: (0.2, 0.7) (0.5, 0.7) (0.8, 0.65); 2: (1.0, 0.3) (1.8, 0.4); "
      "3: (0.2, 0.3) (0.6, 0.25); 4: (1.0, 0.4) (1.7, 0.85); 5: (1.5, 0.65) (2.0, 0.55); "
      "6: (1.5, 0.05) (1.4, 0.25)",

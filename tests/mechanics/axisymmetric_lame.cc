@@ -2,16 +2,18 @@
 // Axisymmetric mode (Mechanics/Axisymmetric): the radial section x in [0, 1], r in [1, 2] of a
 // hollow cylinder, u_x = 0 on x = 0 and x = 1 (plane strain along the axis), an internal pressure
 // p = 1 MPa on r = 1, a free outer surface, and a fracture at r = 1.5 with interior tips and
-// friction coefficient 1. Lame's solution u_r = A r + B / r, A = p a^2 / (2 (lambda + mu)(b^2 - a^2)),
-// B = p a^2 b^2 / (2 mu (b^2 - a^2)), u_x = 0 has no shear, so the fracture sticks with
-// lambda_n = -sigma_rr(1.5) > 0, [u] = 0, and the P2 solution converges at order 3 in the r-weighted L2
-// norm. Printed: errors on a mesh and its red refinement and their observed order (asserted >= 2.7), the largest
+// friction coefficient 1. Lame's solution u_r = A r + B / r, A = p a^2 / (2 (lambda + mu)(b^2 -
+// a^2)), B = p a^2 b^2 / (2 mu (b^2 - a^2)), u_x = 0 has no shear, so the fracture sticks with
+// lambda_n = -sigma_rr(1.5) > 0, [u] = 0, and the P2 solution converges at order 3 in the
+// r-weighted L2 norm. Printed: errors on a mesh and its red refinement and their observed order
+// (asserted >= 2.7), the largest
 // |[u]| and the error of lambda_n. Second part: a uniform pre-stress sigma0 = diag(s_x, s_r) with
 // hoop component s_theta = s_r, balanced by boundary tractions sigma0 n, gives u = 0 (printed:
 // max |u| / (s L / E), at round-off), and s_theta != s_r is rejected without Axisymmetric.
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <porofrac/base/exceptions.h>
@@ -53,11 +55,11 @@ namespace
   parameters()
   {
     mechanics::ContactParameters c;
-    c.young_modulus = E;
-    c.poisson_ratio = nu;
-    c.axisymmetric  = true;
-    c.c             = 1e9;
-    c.friction_all  = "1"; // the fracture sticks: Lame has no shear on it
+    c.young_modulus   = E;
+    c.poisson_ratio   = nu;
+    c.axisymmetric    = true;
+    c.c               = 1e9;
+    c.friction_all    = "1"; // the fracture sticks: Lame has no shear on it
     c.dirichlet[0][0] = "0";
     c.dirichlet[1][0] = "0";
     return c;
@@ -67,11 +69,13 @@ namespace
   std::pair<double, double>
   lame_errors(const mechanics::ContactProblem<2> &problem)
   {
-    const QGaussSimplex<2> q(4);
-    FEValues<2> fv(problem.get_mesh().mapping(), problem.get_dof_handler().get_fe(), q,
+    const QGaussSimplex<2>      q(4);
+    FEValues<2>                 fv(problem.get_mesh().mapping(),
+                   problem.get_dof_handler().get_fe(),
+                   q,
                    update_values | update_quadrature_points | update_JxW_values);
     std::vector<Vector<double>> values(q.size(), Vector<double>(2));
-    double e2 = 0, n2 = 0;
+    double                      e2 = 0, n2 = 0;
     for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
       {
         fv.reinit(cell);
@@ -103,20 +107,20 @@ main()
     {
       auto mesh = section(0.2, level); // nested: the second mesh is the red refinement
 
-      auto prm  = parameters();
+      auto prm        = parameters();
       prm.pressure[2] = "1e6";
       mechanics::ContactProblem<2> problem(*mesh, prm, quiet, timer);
       problem.setup();
       problem.solve();
-      const auto [e, n] = lame_errors(problem);
-      errors[level]     = e / n;
-      double max_jump = 0, ln_err = 0;
+      const auto [e, n]     = lame_errors(problem);
+      errors[level]         = e / n;
+      double       max_jump = 0, ln_err = 0;
       const double sigma_rr = 2 * (lambda_s + mu_s) * A - 2 * mu_s * B / (1.5 * 1.5);
       for (const auto &face : mesh->fracture_faces)
         {
           max_jump = std::max(max_jump, problem.jump(face.index).norm());
-          ln_err   = std::max(ln_err, std::abs(problem.multiplier(face.index) * face.normal +
-                                               sigma_rr) / p);
+          ln_err =
+            std::max(ln_err, std::abs(problem.multiplier(face.index) * face.normal + sigma_rr) / p);
         }
       std::cout << "h = " << h[level] << ": relative L2(r) error of u " << errors[level]
                 << ", states closed " << (max_jump < 1e-6 * (A * 1.5 + B / 1.5) ? "yes" : "NO")
@@ -130,8 +134,8 @@ main()
   // Part 2: a uniform pre-stress with hoop component sigma0_theta = sigma0_r is in equilibrium
   // with the tractions sigma0 n: u = 0.
   {
-    auto mesh = section(0.2);
-    auto prm  = parameters();
+    auto         mesh = section(0.2);
+    auto         prm  = parameters();
     const double sx = -16e6, sr = -12e6;
     prm.pre_stress      = {sx, 0, 0, sr};
     prm.pre_stress_hoop = sr;
@@ -149,8 +153,8 @@ main()
   // Part 3: bad input.
   try
     {
-      auto mesh = section(0.2);
-      auto prm  = parameters();
+      auto mesh           = section(0.2);
+      auto prm            = parameters();
       prm.axisymmetric    = false;
       prm.pre_stress_hoop = 1e6;
       mechanics::ContactProblem<2> problem(*mesh, prm, quiet, timer);
@@ -163,10 +167,10 @@ main()
   try
     {
       geometry::GeometryParameters g;
-      g.domain    = "box";
-      g.box       = "(0, -1) (1, 1)";
-      g.mesh_size = 0.5;
-      auto mesh   = geometry::make_cut_mesh<2>(g);
+      g.domain                          = "box";
+      g.box                             = "(0, -1) (1, 1)";
+      g.mesh_size                       = 0.5;
+      auto                         mesh = geometry::make_cut_mesh<2>(g);
       mechanics::ContactProblem<2> problem(*mesh, parameters(), quiet, timer);
       std::cout << "section crossing r = 0: accepted (WRONG)" << std::endl;
     }

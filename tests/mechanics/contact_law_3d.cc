@@ -22,8 +22,10 @@ namespace
   }
 
   void
-  check(const char *label, const LocalContactLaw<3> &law, const Tensor<1, 3> &l,
-        const Tensor<1, 3> &j)
+  check(const char               *label,
+        const LocalContactLaw<3> &law,
+        const Tensor<1, 3>       &l,
+        const Tensor<1, 3>       &j)
   {
     Tensor<2, 3> Jl, Jj;
     law.jacobian(l, j, Jl, Jj);
@@ -86,8 +88,8 @@ main()
   j[2] = 4e-3;
   l[1] = 0.6e7 * 0.6;
   l[2] = 0.6e7 * 0.8;
-  Tensor<2, 3> Al, Aj;
-  Tensor<1, 3> r;
+  Tensor<2, 3>    Al, Aj;
+  Tensor<1, 3>    r;
   const FaceState s = law.rows(ContactMethod::semismooth_newton, l, j, Al, Aj, r);
   std::cout << "consistent slip: state " << name(s) << ", |residual| / lambda_n "
             << (law.residual(l, j, true).norm() / l[0] < 1e-12 ? "< 1e-12" : "FAILED")

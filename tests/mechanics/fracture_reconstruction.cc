@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The paper's P2 reconstructions used for the 5.2.1 error norms (Section 5; fracture_reconstruction.h)
-// on a horizontal fracture (0.5, 0.5)-(1.5, 0.5) of the box (0, 2) x (0, 1):
-// - the displacement is the P2 interpolant of u = Q(x) (1, -2), Q = (x - 0.5)(1.5 - x), on the cells
+// The paper's P2 reconstructions used for the 5.2.1 error norms (Section 5;
+// fracture_reconstruction.h) on a horizontal fracture (0.5, 0.5)-(1.5, 0.5) of the box (0, 2) x (0,
+// 1):
+// - the displacement is the P2 interpolant of u = Q(x) (1, -2), Q = (x - 0.5)(1.5 - x), on the
+// cells
 //   above the fracture and 0 below, so the natural P2 jump must equal -+Q (1, -2) at every
 //   quadrature point (Q is quadratic and vanishes at the tips, where the sides share vertices), and
 //   the face mean of eq. (10) the mean of Q over the face;
@@ -11,6 +13,7 @@
 // Printed: the largest deviations (scaled) and yes/no answers.
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <porofrac/geometry/mesh_generator.h>
@@ -48,10 +51,12 @@ main()
   mechanics::ContactProblem<2> problem(*mesh, c, quiet, timer);
   problem.setup();
 
-  auto Q = [](const Point<2> &p) { return (p[0] - 0.5) * (1.5 - p[0]); };
+  auto               Q = [](const Point<2> &p) { return (p[0] - 0.5) * (1.5 - p[0]); };
   const Tensor<1, 2> e({1., -2.});
   const auto        &fe = problem.get_dof_handler().get_fe();
-  FEValues<2> fv(mesh->mapping(), fe, Quadrature<2>(fe.get_unit_support_points()),
+  FEValues<2>        fv(mesh->mapping(),
+                 fe,
+                 Quadrature<2>(fe.get_unit_support_points()),
                  update_quadrature_points);
   std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
   problem.u = 0;
@@ -70,10 +75,10 @@ main()
 
   std::cout << std::scientific << std::setprecision(2);
   std::cout << "fracture faces: " << mesh->fracture_faces.size() << std::endl;
-  double       jump_error = 0, lambda_error = 0, mean_error = 0, total_weight = 0;
-  int          sign       = 0;
-  bool         one_sign   = true;
-  const auto   values     = mechanics::reconstruct_fracture_fields(problem, 4);
+  double     jump_error = 0, lambda_error = 0, mean_error = 0, total_weight = 0;
+  int        sign     = 0;
+  bool       one_sign = true;
+  const auto values   = mechanics::reconstruct_fracture_fields(problem, 4);
   for (const auto &v : values)
     {
       const double q = Q(v.x);
@@ -92,18 +97,19 @@ main()
   for (const auto &face : mesh->fracture_faces)
     {
       const double a = face.abscissa_begin + 0.5, b = face.abscissa_end + 0.5; // x on the face
-      auto         P = [](const double x) { return -x * x * x / 3 + x * x - 0.75 * x; };
+      auto         P    = [](const double x) { return -x * x * x / 3 + x * x - 0.75 * x; };
       const double mean = (P(b) - P(a)) / (b - a);
       mean_error =
-        std::max(mean_error, (problem.jump(face.index) - sign * mean * e).norm() / (0.25 * e.norm()));
+        std::max(mean_error,
+                 (problem.jump(face.index) - sign * mean * e).norm() / (0.25 * e.norm()));
     }
   std::cout << "quadrature points: " << values.size() << ", total weight " << std::fixed
             << std::setprecision(6) << total_weight << std::scientific << std::setprecision(2)
             << std::endl;
   std::cout << "P2 jump = +-Q (1, -2) with one sign on the whole fracture: "
             << (one_sign && jump_error < 1e-12 ? "yes" : "no") << std::endl;
-  std::cout << "face means of eq. (10) = mean of +-Q (1, -2): " << (mean_error < 1e-12 ? "yes" : "no")
-            << std::endl;
+  std::cout << "face means of eq. (10) = mean of +-Q (1, -2): "
+            << (mean_error < 1e-12 ? "yes" : "no") << std::endl;
   std::cout << "uniform multiplier reproduced: " << (lambda_error < 1e-12 ? "yes" : "no")
             << std::endl;
 
@@ -119,6 +125,6 @@ main()
   for (const auto &v : mechanics::reconstruct_fracture_fields(problem, 4))
     dev = std::max(dev, std::abs(v.lambda[0] - 1e6 * v.abscissa) / 1e6);
   std::cout << "linear multiplier: reconstruction within one face length of the exact line: "
-            << (dev < 0.1 ? "yes" : "no") << ", and not the face values: "
-            << (dev > 1e-6 ? "yes" : "no") << std::endl;
+            << (dev < 0.1 ? "yes" : "no")
+            << ", and not the face values: " << (dev > 1e-6 ? "yes" : "no") << std::endl;
 }

@@ -34,7 +34,8 @@ namespace
         p.solve();
       }
     catch (const SolverFailure &)
-      {}
+      {
+      }
     return p.converged;
   }
 
@@ -54,12 +55,12 @@ main()
   std::cout << "fracture faces: " << mesh->fracture_faces.size() << std::endl;
 
   mechanics::ContactParameters c = six_fractures::contact_parameters();
-  c.schur_complement          = true;
-  c.line_search               = true;
-  c.line_search_on_stagnation = true;
-  c.cycle_damping             = 0.5;
-  c.initial_lambda_n          = 100;
-  c.max_iterations            = 50;
+  c.schur_complement             = true;
+  c.line_search                  = true;
+  c.line_search_on_stagnation    = true;
+  c.cycle_damping                = 0.5;
+  c.initial_lambda_n             = 100;
+  c.max_iterations               = 50;
 
   ConditionalOStream quiet(std::cout, false);
   TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
@@ -67,8 +68,8 @@ main()
   mechanics::ContactProblem<2> shared(*mesh, c, quiet, timer);
   shared.setup();
   solve(shared);
-  for (const auto method : {mechanics::ContactMethod::active_set,
-                            mechanics::ContactMethod::semismooth_newton})
+  for (const auto method :
+       {mechanics::ContactMethod::active_set, mechanics::ContactMethod::semismooth_newton})
     for (const bool stick : {true, false})
       for (const double cc : {1e6, 1e9, 1e11})
         {
@@ -80,9 +81,9 @@ main()
           fresh.setup();
           const bool fresh_converged = solve(fresh);
           shared.set_contact_solver(method, cc, stick);
-          const bool   shared_converged = solve(shared);
-          const auto  &h1 = fresh.residual_history, &h2 = shared.residual_history;
-          bool         same_history = (h1.size() == h2.size());
+          const bool  shared_converged = solve(shared);
+          const auto &h1 = fresh.residual_history, &h2 = shared.residual_history;
+          bool        same_history = (h1.size() == h2.size());
           for (unsigned int k = 0; same_history && k < h1.size(); ++k)
             same_history = std::abs(h1[k] - h2[k]) <= 1e-12 * std::abs(h1[k]);
           const bool same_solution = relative_difference(fresh.u, shared.u) <= 1e-12 &&
@@ -94,8 +95,8 @@ main()
                     << (fresh_converged ? "converged" : "not converged") << " in "
                     << fresh.iterations << ", shared "
                     << (shared_converged ? "converged" : "not converged") << " in "
-                    << shared.iterations << "; same residual history: "
-                    << (same_history ? "yes" : "no")
+                    << shared.iterations
+                    << "; same residual history: " << (same_history ? "yes" : "no")
                     << "; same u, lambda: " << (same_solution ? "yes" : "no") << std::endl;
         }
 }

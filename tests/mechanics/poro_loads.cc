@@ -29,8 +29,8 @@ namespace
   square(const std::string &box, const double y0 = 0)
   {
     geometry::GeometryParameters g;
-    g.domain              = "box";
-    g.box                 = box;
+    g.domain    = "box";
+    g.box       = box;
     g.fractures = "1: (0.2, " + std::to_string(y0 + 0.5) + ") (0.8, " + std::to_string(y0 + 0.5) +
                   "); 2: (0.5, " + std::to_string(y0 + 0.2) + ") (0.5, " +
                   std::to_string(y0 + 0.5) + ")";
@@ -74,9 +74,10 @@ main()
           ln_max               = std::max(ln_max, l * face.normal);
           lt_max               = std::max(lt_max, std::abs(l * face.tangent));
         }
-      std::cout << "p_f = " << pf << ": max |u| E / (b p) " << problem.displacement().linfty_norm() * E / (b * p)
-                << ", lambda_n / (b p) in [" << ln_min / (b * p) << ", " << ln_max / (b * p)
-                << "], max |lambda_t| / (b p) " << lt_max / (b * p) << std::endl;
+      std::cout << "p_f = " << pf << ": max |u| E / (b p) "
+                << problem.displacement().linfty_norm() * E / (b * p) << ", lambda_n / (b p) in ["
+                << ln_min / (b * p) << ", " << ln_max / (b * p) << "], max |lambda_t| / (b p) "
+                << lt_max / (b * p) << std::endl;
     }
 
   // Cell divergence of the compression u = e (x, y) (e < 0): uniform isotropic strain, exact

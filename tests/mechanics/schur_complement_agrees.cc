@@ -29,13 +29,13 @@ main()
 
   ConditionalOStream quiet(std::cout, false);
   TimerOutput        timer(quiet, TimerOutput::never, TimerOutput::wall_times);
-  for (const auto method : {mechanics::ContactMethod::active_set,
-                            mechanics::ContactMethod::semismooth_newton})
+  for (const auto method :
+       {mechanics::ContactMethod::active_set, mechanics::ContactMethod::semismooth_newton})
     {
       mechanics::ContactParameters c = six_fractures::contact_parameters();
-      c.method        = method;
-      c.stick_guess   = (method == mechanics::ContactMethod::semismooth_newton);
-      c.c             = (method == mechanics::ContactMethod::semismooth_newton ? 1e11 : 1e9);
+      c.method                       = method;
+      c.stick_guess                  = (method == mechanics::ContactMethod::semismooth_newton);
+      c.c = (method == mechanics::ContactMethod::semismooth_newton ? 1e11 : 1e9);
       mechanics::ContactProblem<2> full(*mesh, c, quiet, timer);
       c.schur_complement = true;
       mechanics::ContactProblem<2> schur(*mesh, c, quiet, timer);
@@ -58,8 +58,9 @@ main()
           dl -= schur.lambda;
           const double eu = du.linfty_norm() / full.u.linfty_norm();
           const double el = dl.linfty_norm() / full.lambda.linfty_norm();
-          std::cout << (method == mechanics::ContactMethod::active_set ? "active set, open guess" :
-                                                                         "semismooth newton, stick guess")
+          std::cout << (method == mechanics::ContactMethod::active_set ?
+                          "active set, open guess" :
+                          "semismooth newton, stick guess")
                     << (warm ? ", warm start after a load change" : "") << ": iterations "
                     << full.iterations << " / " << schur.iterations << ", same face states on "
                     << same_states << " faces, u and lambda agree to 1e-8: "

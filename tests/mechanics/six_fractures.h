@@ -19,11 +19,11 @@ namespace six_fractures
   mesh(const double h, const double hf)
   {
     geometry::GeometryParameters g;
-    g.domain    = "box";
-    g.box       = "(0, 0) (2, 1)";
-    g.fractures = "1: (0.2, 0.7) (0.5, 0.7) (0.8, 0.65); 2: (1.0, 0.3) (1.8, 0.4); "
-                  "3: (0.2, 0.3) (0.6, 0.25); 4: (1.0, 0.4) (1.7, 0.85); "
-                  "5: (1.5, 0.65) (2.0, 0.55); 6: (1.5, 0.05) (1.4, 0.25)";
+    g.domain              = "box";
+    g.box                 = "(0, 0) (2, 1)";
+    g.fractures           = "1: (0.2, 0.7) (0.5, 0.7) (0.8, 0.65); 2: (1.0, 0.3) (1.8, 0.4); "
+                            "3: (0.2, 0.3) (0.6, 0.25); 4: (1.0, 0.4) (1.7, 0.85); "
+                            "5: (1.5, 0.65) (2.0, 0.55); 6: (1.5, 0.05) (1.4, 0.25)";
     g.mesh_size           = h;
     g.fracture_mesh_size  = hf;
     g.transition_distance = 0.05;

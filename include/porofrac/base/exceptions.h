@@ -16,10 +16,11 @@ namespace porofrac
   {
   public:
     InputError(const std::string &parameter, const std::string &reason)
-      : std::runtime_error("parameter '" + parameter + "': " + reason)
-      , parameter(parameter)
-      , reason(reason)
-    {}
+        : std::runtime_error("parameter '" + parameter + "': " + reason)
+        , parameter(parameter)
+        , reason(reason)
+    {
+    }
 
     const std::string parameter;
     const std::string reason;
@@ -33,8 +34,9 @@ namespace porofrac
   {
   public:
     explicit SolverFailure(const std::string &what)
-      : std::runtime_error(what)
-    {}
+        : std::runtime_error(what)
+    {
+    }
   };
 
 /// Throws the InputError @p error unless @p condition holds (the message is built lazily).
@@ -43,7 +45,8 @@ namespace porofrac
     {                                          \
       if (!(condition))                        \
         throw error;                           \
-  } while (false)
+    }                                          \
+  while (false)
 
   /// Throws InputError(parameter, reason) unless @p condition holds.
   inline void

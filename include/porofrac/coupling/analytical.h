@@ -18,14 +18,18 @@ namespace porofrac
      */
     struct Terzaghi
     {
-      double height;            ///< H (m)
-      double consolidation;     ///< c_v (m^2/s)
-      double initial_pressure;  ///< p0 (Pa)
-      double drained_pressure;  ///< p_top (Pa)
+      double height;           ///< H (m)
+      double consolidation;    ///< c_v (m^2/s)
+      double initial_pressure; ///< p0 (Pa)
+      double drained_pressure; ///< p_top (Pa)
 
       static double
-      coefficient(const double permeability, const double viscosity, const double young_modulus,
-                  const double poisson_ratio, const double biot, const double biot_modulus);
+      coefficient(const double permeability,
+                  const double viscosity,
+                  const double young_modulus,
+                  const double poisson_ratio,
+                  const double biot,
+                  const double biot_modulus);
 
       /// Pressure at depth z below the drained boundary and time t (series to 1e-14 relative).
       double

@@ -3,6 +3,7 @@
 #define POROFRAC_COUPLING_NEWTON_KRYLOV_H
 
 #include <deal.II/base/parameter_handler.h>
+
 #include <deal.II/lac/vector.h>
 
 #include <functional>
@@ -28,11 +29,11 @@ namespace porofrac
       unsigned int max_gmres_iterations = 30;
       /// Eisenstat-Walker forcing terms (choice 2): eta_k = gamma (|R_k| / |R_{k-1}|)^alpha,
       /// capped by eta_max.
-      double eta_max  = 0.1;
+      double eta_max = 0.1;
       /// Anderson acceleration: number of stored differences.
       unsigned int anderson_depth = 5;
-      double ew_gamma = 0.9;
-      double ew_alpha = 2.0;
+      double       ew_gamma       = 0.9;
+      double       ew_alpha       = 2.0;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -43,13 +44,13 @@ namespace porofrac
     /// What a fixed-point solve did.
     struct FixedPointResult
     {
-      bool         converged        = false;
-      unsigned int iterations       = 0; ///< Newton (or Picard) iterations
-      unsigned int map_evaluations  = 0; ///< calls of g, each a full subproblem solve
-      unsigned int gmres_iterations = 0; ///< total Krylov iterations
-      double       relative_residual  = 0; ///< ||R(x)|| / ||R(x_0)|| at the end
-      double       relative_increment = 0; ///< last ||dx|| / ||x||
-      std::vector<double> residual_history;  ///< ||R(x_k)||
+      bool                converged          = false;
+      unsigned int        iterations         = 0; ///< Newton (or Picard) iterations
+      unsigned int        map_evaluations    = 0; ///< calls of g, each a full subproblem solve
+      unsigned int        gmres_iterations   = 0; ///< total Krylov iterations
+      double              relative_residual  = 0; ///< ||R(x)|| / ||R(x_0)|| at the end
+      double              relative_increment = 0; ///< last ||dx|| / ||x||
+      std::vector<double> residual_history;       ///< ||R(x_k)||
       /// Whether the states inside g are those of the returned x: true for Newton-Krylov stopping
       /// on the residual (last evaluation at x) and for Picard (x = g(x_prev) within the
       /// tolerance); false for Newton-Krylov stopping on the increment, whose last evaluation

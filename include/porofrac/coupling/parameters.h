@@ -22,8 +22,8 @@ namespace porofrac
     /// Deck subsection "Coupling": Biot data of eq. (11d) and the per-step fixed point.
     struct CouplingParameters
     {
-      double           biot_coefficient = 1.;  ///< b in [0, 1]
-      double           biot_modulus     = 1e9; ///< M > 0 (Pa)
+      double biot_coefficient = 1.;  ///< b in [0, 1]
+      double biot_modulus     = 1e9; ///< M > 0 (Pa)
       /// p_E with the capillary energy U of (11d); false = the modified model of Remark 3.1.
       bool             capillary_energy = true;
       CouplingVariable variable         = CouplingVariable::equivalent_pressure;
@@ -32,10 +32,10 @@ namespace porofrac
       double inner_flow_residual_tolerance = 1e-10;
       double inner_flow_update_tolerance   = 1e-12;
       /// Kozeny-Carman permeability of the previous step's porosity (explicit in time).
-      bool   kozeny_carman = true;
+      bool kozeny_carman = true;
       /// Start each step's fixed point from the linear extrapolation in time of the last two
       /// accepted states instead of the last one.
-      bool   extrapolate_initial_guess = false;
+      bool                 extrapolate_initial_guess = false;
       FixedPointParameters fixed_point;
 
       static void

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/coupling/newton_krylov.h>
@@ -32,7 +33,7 @@ namespace porofrac
       unsigned int mechanics_iterations   = 0; ///< summed over all contact solves of the step
       double       relative_residual      = 0;
       std::array<double, 2> mass_defect{{0., 0.}};
-      std::string  failure; ///< why the step failed, empty when converged
+      std::string           failure; ///< why the step failed, empty when converged
     };
 
     /**
@@ -53,7 +54,8 @@ namespace porofrac
       double capillary_fracture = 0;
       double elastic            = 0;
       double storage            = 0; ///< sum (p_E)^2 |K| / (2M)
-      double total() const
+      double
+      total() const
       {
         return capillary_matrix + capillary_fracture + elastic + storage;
       }
@@ -154,24 +156,23 @@ namespace porofrac
       TimerOutput             &timer;
       const unsigned int       n_matrix, n_fracture;
 
-      double                   dt = 0;
-      Vector<double>           p_E;       ///< current (matrix cells, then fracture faces)
-      Vector<double>           p_E_old;   ///< accepted
-      Vector<double>           p_E_initial;
-      Vector<double>           y_initial; ///< div u^0, [u^0]_n
-      Vector<double>           y_old;     ///< accepted
+      double         dt = 0;
+      Vector<double> p_E;     ///< current (matrix cells, then fracture faces)
+      Vector<double> p_E_old; ///< accepted
+      Vector<double> p_E_initial;
+      Vector<double> y_initial; ///< div u^0, [u^0]_n
+      Vector<double> y_old;     ///< accepted
       /// The accepted states before p_E_old and y_old, and the step between them (0: none yet).
-      Vector<double>           p_E_older, y_older;
-      double                   dt_old = 0;
+      Vector<double> p_E_older, y_older;
+      double         dt_old = 0;
       /// x_old + (dt/dt_old)(x_old - x_older) with Extrapolate initial guess, else x_old.
       Vector<double>
       initial_guess(const Vector<double> &x_old, const Vector<double> &x_older) const;
-      Vector<double>           u_old;     ///< accepted displacement
-      std::vector<Tensor<1, dim>> jump_old;
+      Vector<double>                            u_old; ///< accepted displacement
+      std::vector<Tensor<1, dim>>               jump_old;
       typename flow::TwoPhaseSolver<dim>::State flow_guess;
-      CoupledStepReport        report;
-      double                   step_dissipation = 0, step_friction_work = 0,
-                               step_supplied_work = 0;
+      CoupledStepReport                         report;
+      double step_dissipation = 0, step_friction_work = 0, step_supplied_work = 0;
     };
   } // namespace coupling
 } // namespace porofrac

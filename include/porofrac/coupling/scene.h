@@ -23,8 +23,9 @@ namespace porofrac
      */
     template <int dim>
     void
-    run_scene(dealii::ParameterHandler &prm, const porofrac::geometry::CutMesh<dim> &mesh,
-              porofrac::io::RunContext &context);
+    run_scene(dealii::ParameterHandler               &prm,
+              const porofrac::geometry::CutMesh<dim> &mesh,
+              porofrac::io::RunContext               &context);
   } // namespace coupling
 } // namespace porofrac
 

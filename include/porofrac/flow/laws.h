@@ -29,7 +29,9 @@ namespace porofrac
       static SaturationLaw
       corey(const double R, const std::string &parameter = "Flow/Corey R");
       static SaturationLaw
-      van_genuchten(const double P_r, const double n, const std::string &parameter = "Flow/van Genuchten");
+      van_genuchten(const double       P_r,
+                    const double       n,
+                    const std::string &parameter = "Flow/van Genuchten");
 
       /// Non-wetting saturation S^nw(p_c).
       double
@@ -70,7 +72,9 @@ namespace porofrac
       static RelativePermeability
       linear();
       static RelativePermeability
-      van_genuchten_mualem(const double q, const double S_lr, const double S_gr,
+      van_genuchten_mualem(const double       q,
+                           const double       S_lr,
+                           const double       S_gr,
                            const std::string &parameter = "Flow/Relative permeability");
 
       /// Phase 0 = wetting, 1 = non-wetting. Value and d/ds^nw.
@@ -107,7 +111,8 @@ namespace porofrac
       double
       mobility(const unsigned int phase, const double s_nw) const
       {
-        const double floor = phase == 1 && mobility_floor_nw >= 0 ? mobility_floor_nw : mobility_floor;
+        const double floor =
+          phase == 1 && mobility_floor_nw >= 0 ? mobility_floor_nw : mobility_floor;
         return (relative_permeability.value(phase, s_nw) + floor) / viscosity[phase];
       }
       double

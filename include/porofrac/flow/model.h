@@ -20,12 +20,12 @@ namespace porofrac
     /// Time stepping of deck subsection "Flow": dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max).
     struct TimeStepping
     {
-      double       final_time       = 1;
-      double       initial_step     = 1;
-      double       maximum_step     = 1;
-      double       growth           = 1.1;
-      unsigned int maximum_cuts     = 20;
-      unsigned int output_every     = 1;
+      double       final_time   = 1;
+      double       initial_step = 1;
+      double       maximum_step = 1;
+      double       growth       = 1.1;
+      unsigned int maximum_cuts = 20;
+      unsigned int output_every = 1;
     };
 
     /**
@@ -36,14 +36,14 @@ namespace porofrac
     template <int dim>
     struct FlowModel
     {
-      std::array<RockType, 2>               rocks;
-      std::unique_ptr<TpfaGrid<dim>>        grid;
-      std::unique_ptr<TwoPhaseSolver<dim>>  solver;
-      NewtonParameters                      newton;
-      TimeStepping                          stepping;
-      double                                initial_porosity     = 0; ///< phi_0
-      double                                initial_permeability = 0; ///< K_0 (m^2)
-      double                                initial_aperture     = 0; ///< d_0 (m)
+      std::array<RockType, 2>              rocks;
+      std::unique_ptr<TpfaGrid<dim>>       grid;
+      std::unique_ptr<TwoPhaseSolver<dim>> solver;
+      NewtonParameters                     newton;
+      TimeStepping                         stepping;
+      double                               initial_porosity     = 0; ///< phi_0
+      double                               initial_permeability = 0; ///< K_0 (m^2)
+      double                               initial_aperture     = 0; ///< d_0 (m)
     };
 
     /**
@@ -53,8 +53,8 @@ namespace porofrac
      */
     template <int dim>
     FlowModel<dim>
-    make_flow_model(const dealii::ParameterHandler                 &prm,
-                    const geometry::CutMesh<dim>                   &mesh,
+    make_flow_model(const dealii::ParameterHandler                &prm,
+                    const geometry::CutMesh<dim>                  &mesh,
                     const std::function<void(NewtonParameters &)> &adjust_newton = {});
   } // namespace flow
 } // namespace porofrac

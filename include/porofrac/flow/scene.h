@@ -22,8 +22,10 @@ namespace porofrac
 
     /// Reads the rock type in subsection Flow/@p name (Matrix or Fracture), validated.
     RockType
-    parse_rock(const dealii::ParameterHandler &prm, const std::string &name, const double mu_w,
-               const double mu_nw);
+    parse_rock(const dealii::ParameterHandler &prm,
+               const std::string              &name,
+               const double                    mu_w,
+               const double                    mu_nw);
 
     /**
      * Parses "id: p_w = v, p_nw = v; id: s_nw = v, p_nw = v; ..." (two of p_w, p_nw, s_nw, s_w
@@ -35,8 +37,9 @@ namespace porofrac
     /// Runs the flow-only time loop of a two-phase flow deck (Physics = two-phase flow).
     template <int dim>
     void
-    run_scene(const dealii::ParameterHandler &prm, const porofrac::geometry::CutMesh<dim> &mesh,
-              porofrac::io::RunContext &context);
+    run_scene(const dealii::ParameterHandler         &prm,
+              const porofrac::geometry::CutMesh<dim> &mesh,
+              porofrac::io::RunContext               &context);
   } // namespace flow
 } // namespace porofrac
 

@@ -35,9 +35,9 @@ namespace porofrac
      *   boundary whose boundary id has a Dirichlet condition.
      *
      * A connection joins two nodes a, b with a transmissibility T and, for each end, the rock type
-     * whose laws give the upwind mobility at that end. Transmissibilities (update_transmissibilities)
-     * depend on the per-cell inputs `permeability`, `aperture` and the normal transmissibility
-     * Lambda_f, that another module may change between solves:
+     * whose laws give the upwind mobility at that end. Transmissibilities
+     * (update_transmissibilities) depend on the per-cell inputs `permeability`, `aperture` and the
+     * normal transmissibility Lambda_f, that another module may change between solves:
      * - matrix-matrix: |e| / (d_K,e/K_K + d_L,e/K_L) (signed circumcentre distances);
      * - matrix-boundary and matrix-interface: |e| K_K / d_K,e;
      * - interface-fracture: |sigma| Lambda_f (eq. (3));
@@ -64,8 +64,8 @@ namespace porofrac
 
       struct Node
       {
-        NodeKind           kind;
-        Rock               rock;
+        NodeKind kind;
+        Rock     rock;
         /// Weighted cell measure (matrix), weighted face measure (fracture), 0 otherwise.
         double             measure;
         Point<dim>         centre;
@@ -94,10 +94,10 @@ namespace porofrac
         double transmissibility = 0;
       };
 
-      TpfaGrid(const geometry::CutMesh<dim>           &mesh,
-               const bool                              axisymmetric,
-               const std::set<types::boundary_id>     &matrix_dirichlet_ids,
-               const std::set<types::boundary_id>     &fracture_dirichlet_ids);
+      TpfaGrid(const geometry::CutMesh<dim>       &mesh,
+               const bool                          axisymmetric,
+               const std::set<types::boundary_id> &matrix_dirichlet_ids,
+               const std::set<types::boundary_id> &fracture_dirichlet_ids);
 
       /// Recomputes every transmissibility from permeability, aperture and Lambda_f; validates
       /// them (InputError naming Flow/...).
@@ -133,11 +133,11 @@ namespace porofrac
       unsigned int            n_interfaces;
       unsigned int            n_intersections;
       /// Number of matrix connections whose centre lies on the wrong side of the face.
-      unsigned int            n_non_admissible;
+      unsigned int n_non_admissible;
       /// Matrix-matrix connections with d_K,e + d_L,e <= 0 (non-Delaunay pairs), where unsigned
       /// distances are used instead; boundary and interface faces with d_K,e <= 0 use
       /// max(d_K,e, 1e-3 diameter). Both lose the exactness of TPFA for linear fields.
-      unsigned int            n_fallback;
+      unsigned int n_fallback;
 
       /// Per-cell inputs: porosity and isotropic permeability (m^2) of matrix cells, aperture d_f
       /// (m) of fracture cells, normal transmissibility Lambda_f (m).

@@ -4,12 +4,13 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <porofrac/flow/laws.h>
 #include <porofrac/base/sparse_lu.h>
+#include <porofrac/flow/laws.h>
 #include <porofrac/flow/tpfa_grid.h>
 
 #include <array>
@@ -25,7 +26,7 @@ namespace porofrac
     /// Stopping rules of the flow Newton method (specs.md 1.1).
     struct NewtonParameters
     {
-      unsigned int max_iterations     = 50;
+      unsigned int max_iterations = 50;
       /// Stop when ||R||_2 / ||R_0||_2 < residual_tolerance ...
       double residual_tolerance = 1e-5;
       /// ... or max |delta p| / max |p| < update_tolerance ...
@@ -64,15 +65,17 @@ namespace porofrac
       unsigned int line_search_steps = 4;
     };
 
-    /// Energy exchanged by the flow over one time step (coupled energy estimate, paper Section 4.2).
+    /// Energy exchanged by the flow over one time step (coupled energy estimate, paper
+    /// Section 4.2).
     struct EnergyExchange
     {
       /// dt sum_alpha sum_c F^alpha_c (p^alpha_a - p^alpha_b) over connections between two
       /// non-Dirichlet nodes (each term >= 0 by phase-potential upwinding).
       double dissipation = 0;
       /// -dt sum_alpha sum_{c with a Dirichlet end b} F^alpha_{c, a->b} p^alpha_b: the power
-      /// supplied through Dirichlet nodes, plus dt sum |K| h^alpha p^alpha of the sources. The dissipation dt F (p_a - p_b) >= 0 of the connections
-      /// to Dirichlet nodes is in neither term, so E^{n+1} - E^n + dissipation <= boundary_work.
+      /// supplied through Dirichlet nodes, plus dt sum |K| h^alpha p^alpha of the sources. The
+      /// dissipation dt F (p_a - p_b) >= 0 of the connections to Dirichlet nodes is in neither
+      /// term, so E^{n+1} - E^n + dissipation <= boundary_work.
       double boundary_work = 0;
     };
 
@@ -116,9 +119,9 @@ namespace porofrac
       /// Also reachable as TwoPhaseSolver<dim>::EnergyExchange.
       using EnergyExchange = flow::EnergyExchange;
 
-      TwoPhaseSolver(const TpfaGrid<dim>              &grid,
-                     const std::array<RockType, 2>    &rocks,
-                     const NewtonParameters           &parameters);
+      TwoPhaseSolver(const TpfaGrid<dim>           &grid,
+                     const std::array<RockType, 2> &rocks,
+                     const NewtonParameters        &parameters);
 
       /// Phase pressures of Dirichlet nodes, by boundary id, for matrix and fracture nodes.
       std::map<types::boundary_id, std::array<double, 2>> matrix_dirichlet;
@@ -139,12 +142,15 @@ namespace porofrac
       dof(const unsigned int i, const unsigned int phase) const
       {
         return node_dof[i] == numbers::invalid_unsigned_int ? numbers::invalid_unsigned_int :
-                                                               2 * node_dof[i] + phase;
+                                                              2 * node_dof[i] + phase;
       }
 
       /// Residual and, if @p jacobian, its analytic derivative with respect to the unknowns.
       void
-      assemble(const State &state, const State &old, const double dt, Vector<double> &residual,
+      assemble(const State          &state,
+               const State          &old,
+               const double          dt,
+               Vector<double>       &residual,
                SparseMatrix<double> *jacobian) const;
 
       /// Non-wetting saturation of node i in @p state, with rock @p rock.
@@ -258,22 +264,30 @@ namespace porofrac
       bool                capillary_energy_     = true;
       /// Pore volume of node i and its derivatives with respect to (p^w_i, p^nw_i).
       double
-      pore_volume(const State &state, const unsigned int i, std::array<double, 2> &derivative) const;
-      unsigned int              n_free;
-      double                    total_pore_volume() const;
-      double                    pressure_scale(const Rock rock) const;
-      double                    slope(const RockType &rock, const double pc) const;
+                   pore_volume(const State           &state,
+                               const unsigned int     i,
+                               std::array<double, 2> &derivative) const;
+      unsigned int n_free;
+      double
+      total_pore_volume() const;
+      double
+      pressure_scale(const Rock rock) const;
+      double
+      slope(const RockType &rock, const double pc) const;
       /// The stagnation fallback of NewtonParameters: mass defect and normalized update small
       /// enough for a stalled solve to count as converged.
-      bool stagnation_fallback_holds(const double mass_defect, const double update) const;
-      mutable bool              entry_slope_active = false;
-      double                    mean_pore_volume   = 0;
+      bool
+                   stagnation_fallback_holds(const double mass_defect, const double update) const;
+      mutable bool entry_slope_active = false;
+      double       mean_pore_volume   = 0;
 
       /// Phase flux a -> b over connection c with derivatives with respect to
       /// (p^w_a, p^nw_a, p^w_b, p^nw_b).
       double
-      flux(const typename TpfaGrid<dim>::Connection &c, const State &state, const unsigned int phase,
-           std::array<double, 4> &derivative) const;
+      flux(const typename TpfaGrid<dim>::Connection &c,
+           const State                              &state,
+           const unsigned int                        phase,
+           std::array<double, 4>                    &derivative) const;
     };
   } // namespace flow
 } // namespace porofrac

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/grid/tria.h>
 
@@ -51,7 +52,7 @@ namespace porofrac
       unsigned int fracture_id;
       /// The bulk cells on the plus and minus sides, and the local face numbers there.
       std::array<typename Triangulation<dim>::active_cell_iterator, 2> cell;
-      std::array<unsigned int, 2>                                   face_no;
+      std::array<unsigned int, 2>                                      face_no;
       /// Unit normal n+ (outward from the plus side), constant on the face.
       Tensor<1, dim> normal;
       /// 2D: unit tangent in the direction of increasing abscissa (n+ = its left normal rotated
@@ -68,7 +69,8 @@ namespace porofrac
       /// Euclidean distance from the centre to the nearest tip of the same fracture (a corner,
       /// an intersection or a point on the outer boundary is not a tip); +infinity if none.
       double distance_to_tip;
-      /// Uncut vertices of the face as indices into CutMesh::fracture_nodes (2D: in abscissa order).
+      /// Uncut vertices of the face as indices into CutMesh::fracture_nodes (2D: in abscissa
+      /// order).
       std::array<unsigned int, dim> nodes;
     };
 
@@ -87,9 +89,9 @@ namespace porofrac
     template <int dim>
     struct FractureNode
     {
-      Point<dim>                location;
-      NodeType                  type;
-      bool                      on_boundary;
+      Point<dim> location;
+      NodeType   type;
+      bool       on_boundary;
       /// Fracture faces having this node as a vertex.
       std::vector<unsigned int> faces;
       /// Vertex indices in the cut Triangulation: one per side region (1 at an interior tip).
@@ -108,11 +110,11 @@ namespace porofrac
       /// Cuts @p raw along its fracture faces and builds the Triangulation and tables.
       explicit CutMesh(const RawMesh<dim> &raw);
 
-      Triangulation<dim>               triangulation;
-      std::vector<FractureFace<dim>>   fracture_faces;
-      std::vector<FractureNode<dim>>   fracture_nodes;
+      Triangulation<dim>             triangulation;
+      std::vector<FractureFace<dim>> fracture_faces;
+      std::vector<FractureNode<dim>> fracture_nodes;
       /// Fracture ids in increasing order, and the faces of each (ordered by abscissa).
-      std::vector<unsigned int>                        fracture_ids;
+      std::vector<unsigned int>                         fracture_ids;
       std::map<unsigned int, std::vector<unsigned int>> faces_of_fracture;
       /// Outer boundary ids present in the mesh.
       std::vector<types::boundary_id> outer_boundary_ids;
@@ -132,7 +134,7 @@ namespace porofrac
        */
       std::pair<unsigned int, Side>
       fracture_face(const typename Triangulation<dim>::active_cell_iterator &cell,
-                    const unsigned int face_no) const;
+                    const unsigned int                                       face_no) const;
 
       /// Fracture nodes where three or more fracture faces meet, or where a fracture meets the
       /// outer boundary (the special nodes the flow needs).

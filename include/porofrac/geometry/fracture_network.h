@@ -17,8 +17,8 @@ namespace porofrac
     /// A fracture in 2D: a polyline with a user id (ids must be distinct).
     struct Polyline
     {
-      unsigned int           id;
-      std::vector<Point<2>>  points;
+      unsigned int          id;
+      std::vector<Point<2>> points;
     };
 
     /// A 2D domain: a simple polygon, counter-clockwise, with one boundary id per edge

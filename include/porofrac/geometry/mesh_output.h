@@ -34,9 +34,9 @@ namespace porofrac
      */
     template <int dim>
     void
-    write_fracture_cells(const CutMesh<dim>  &mesh,
-                         const std::string   &filename,
-                         const std::string   &format,
+    write_fracture_cells(const CutMesh<dim>   &mesh,
+                         const std::string    &filename,
+                         const std::string    &format,
                          const FractureFields &fields = {});
 
     /// Named per-cell values (indexed by active cell index).
@@ -45,10 +45,10 @@ namespace porofrac
     /// Writes per-cell fields on the cut mesh to @p basename.vtu (or .vtk, by @p format).
     template <int dim>
     void
-    write_cell_fields(const CutMesh<dim>  &mesh,
-                      const std::string   &basename,
-                      const std::string   &format,
-                      const CellFields    &fields);
+    write_cell_fields(const CutMesh<dim> &mesh,
+                      const std::string  &basename,
+                      const std::string  &format,
+                      const CellFields   &fields);
 
     /// Writes the cut mesh (material id and circumcentre-inside flag per cell) to
     /// @p basename.vtu/.vtk and its fracture faces to @p basename_fractures.vtu/.vtk.

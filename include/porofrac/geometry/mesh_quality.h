@@ -16,18 +16,18 @@ namespace porofrac
      */
     struct MeshQuality
     {
-      unsigned int n_cells            = 0;
-      unsigned int n_vertices         = 0;
-      unsigned int n_fracture_faces   = 0;
-      double       min_angle_degrees  = 0;
-      double       max_angle_degrees  = 0;
-      unsigned int n_connections      = 0;
+      unsigned int n_cells           = 0;
+      unsigned int n_vertices        = 0;
+      unsigned int n_fracture_faces  = 0;
+      double       min_angle_degrees = 0;
+      double       max_angle_degrees = 0;
+      unsigned int n_connections     = 0;
       /// Connections whose centre segment deviates from the face normal by more than 1e-8 rad.
-      unsigned int n_non_orthogonal   = 0;
+      unsigned int n_non_orthogonal = 0;
       /// Connections with (x_L - x_K) . n_KL <= 0 (non-Delaunay pairs).
       unsigned int n_non_positive_distance = 0;
       /// Cells whose circumcentre lies outside the cell (obtuse triangles).
-      unsigned int n_centres_outside  = 0;
+      unsigned int n_centres_outside = 0;
       /// Boundary or fracture faces with (x_sigma - x_K) . n <= 0.
       unsigned int n_boundary_non_positive_distance = 0;
       /// Connections that are not admissible (non-orthogonal or non-positive distance).

@@ -30,9 +30,9 @@ namespace porofrac
         unsigned int                  tag;
       };
 
-      std::vector<Point<dim>>                      vertices;
+      std::vector<Point<dim>>                        vertices;
       std::vector<std::array<unsigned int, dim + 1>> cells;
-      std::vector<types::material_id>              cell_material;
+      std::vector<types::material_id>                cell_material;
       /// Faces on the outer boundary; tag = boundary id.
       std::vector<TaggedFace> boundary_faces;
       /// Faces on a fracture; tag = fracture id (each listed once, before cutting).

@@ -80,7 +80,9 @@ namespace porofrac
     /// Barycentric test with a relative tolerance: is @p x inside the simplex @p p?
     template <int dim>
     bool
-    contains(const std::array<Point<dim>, dim + 1> &p, const Point<dim> &x, const double tol = 1e-12)
+    contains(const std::array<Point<dim>, dim + 1> &p,
+             const Point<dim>                      &x,
+             const double                           tol = 1e-12)
     {
       Tensor<2, dim> A;
       for (unsigned int i = 0; i < dim; ++i)

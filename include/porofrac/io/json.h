@@ -73,13 +73,13 @@ namespace porofrac
       write_file(const std::string &filename) const;
 
     private:
-      Type                                        kind;
-      bool                                        b       = false;
-      double                                      number  = 0;
-      long long                                   integer = 0;
-      std::string                                 text;
-      std::vector<Json>                           items;
-      std::vector<std::pair<std::string, Json>>   members;
+      Type                                      kind;
+      bool                                      b       = false;
+      double                                    number  = 0;
+      long long                                 integer = 0;
+      std::string                               text;
+      std::vector<Json>                         items;
+      std::vector<std::pair<std::string, Json>> members;
     };
   } // namespace io
 } // namespace porofrac

@@ -71,12 +71,13 @@ namespace porofrac
 
       /**
        * Complementarity functions (25)-(26): C_n = lambda_n - max(0, b),
-       * C_tau = lambda_tau max(F b, |a|) - a max(0, F b). Returned in stress units (C_tau divided by
-       * max(F b, |a|) when that is positive) for the stopping criterion when @p scaled is true.
+       * C_tau = lambda_tau max(F b, |a|) - a max(0, F b). Returned in stress units (C_tau divided
+       * by max(F b, |a|) when that is positive) for the stopping criterion when @p scaled is true.
        */
       Tensor<1, dim>
-      residual(const Tensor<1, dim> &lambda, const Tensor<1, dim> &jump,
-               const bool scaled = false) const
+      residual(const Tensor<1, dim> &lambda,
+               const Tensor<1, dim> &jump,
+               const bool            scaled = false) const
       {
         const double         bb = b(lambda, jump);
         const Tensor<1, dim> a  = tangential(lambda + c * jump);
@@ -94,8 +95,10 @@ namespace porofrac
        * Used by the unit test against finite differences.
        */
       void
-      jacobian(const Tensor<1, dim> &lambda, const Tensor<1, dim> &jump, Tensor<2, dim> &J_lambda,
-               Tensor<2, dim> &J_jump) const
+      jacobian(const Tensor<1, dim> &lambda,
+               const Tensor<1, dim> &jump,
+               Tensor<2, dim>       &J_lambda,
+               Tensor<2, dim>       &J_jump) const
       {
         J_lambda                = 0;
         J_jump                  = 0;
@@ -142,16 +145,20 @@ namespace porofrac
        * regularized semi-smooth Newton of specs.md 3a.
        */
       FaceState
-      rows(const ContactMethod method, const Tensor<1, dim> &lambda, const Tensor<1, dim> &jump,
-           Tensor<2, dim> &A_lambda, Tensor<2, dim> &A_jump, Tensor<1, dim> &rhs) const
+      rows(const ContactMethod   method,
+           const Tensor<1, dim> &lambda,
+           const Tensor<1, dim> &jump,
+           Tensor<2, dim>       &A_lambda,
+           Tensor<2, dim>       &A_jump,
+           Tensor<1, dim>       &rhs) const
       {
-        A_lambda               = 0;
-        A_jump                 = 0;
-        rhs                    = 0;
-        const FaceState st     = state(lambda, jump);
-        const double    bb     = b(lambda, jump);
-        const Tensor<1, dim> a = tangential(lambda + c * jump);
-        const double    na     = a.norm();
+        A_lambda                = 0;
+        A_jump                  = 0;
+        rhs                     = 0;
+        const FaceState      st = state(lambda, jump);
+        const double         bb = b(lambda, jump);
+        const Tensor<1, dim> a  = tangential(lambda + c * jump);
+        const double         na = a.norm();
         if (st == FaceState::open)
           {
             for (unsigned int i = 0; i < dim; ++i)
@@ -213,8 +220,8 @@ namespace porofrac
         for (unsigned int i = 1; i < dim; ++i)
           for (unsigned int j = 1; j < dim; ++j)
             IbM[i][j] = (i == j ? 1. : 0.) - beta * M[i][j];
-        const Tensor<2, dim> Q = invert(IbM);
-        const Tensor<1, dim> v = Q * a / na;
+        const Tensor<2, dim> Q  = invert(IbM);
+        const Tensor<1, dim> v  = Q * a / na;
         const Tensor<1, dim> Qh = Q * h;
         for (unsigned int i = 1; i < dim; ++i)
           {

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -36,8 +37,10 @@ namespace porofrac
     class ContactProblem
     {
     public:
-      ContactProblem(const geometry::CutMesh<dim> &mesh, const ContactParameters &parameters,
-                     ConditionalOStream &progress, TimerOutput &timer);
+      ContactProblem(const geometry::CutMesh<dim> &mesh,
+                     const ContactParameters      &parameters,
+                     ConditionalOStream           &progress,
+                     TimerOutput                  &timer);
 
       /// Dofs, constraints, elasticity block (assembled once), coupling block.
       void
@@ -142,8 +145,8 @@ namespace porofrac
       double
       time_linear_solve_cholesky() const;
 
-      unsigned int iterations = 0;
-      bool         converged  = false;
+      unsigned int        iterations = 0;
+      bool                converged  = false;
       std::vector<double> residual_history;
       /// Diagnostic: |G(x_k)| / |G(x_0)| with G of eq. (27) unscaled (mechanical rows in N,
       /// C_n in Pa, C_tau in Pa^2), x_0 the initial guess: one reading of the paper's 'relative
@@ -181,7 +184,7 @@ namespace porofrac
       /// Cauchy stress at a point of a cell (for tests): C eps(u) + pre-stress.
       SymmetricTensor<2, dim>
       stress(const typename DoFHandler<dim>::active_cell_iterator &cell,
-             const Point<dim> &unit_point) const;
+             const Point<dim>                                     &unit_point) const;
 
       /// True when the Schur complement solver was asked for but the elasticity block alone
       /// is singular, so that the full system is solved.
@@ -219,9 +222,9 @@ namespace porofrac
       apply_elasticity(Vector<double> &r) const;
 
       const geometry::CutMesh<dim> &mesh;
-      ContactParameters              prm; ///< only the contact solver may change
-      ConditionalOStream            &progress;
-      TimerOutput                   &timer;
+      ContactParameters             prm; ///< only the contact solver may change
+      ConditionalOStream           &progress;
+      TimerOutput                  &timer;
 
       FESystem<dim>             fe;
       DoFHandler<dim>           dof_handler;
@@ -232,21 +235,22 @@ namespace porofrac
       SparseMatrix<double> K_full;      ///< unconstrained elasticity (residuals)
       SparseMatrix<double> base_matrix; ///< constrained K + B^T
       SparseMatrix<double> system_matrix;
-      Vector<double>       f;           ///< load vector (unconstrained): f_fixed + p_E loads
-      Vector<double>       f_fixed;     ///< the deck's loads only
+      Vector<double>       f;       ///< load vector (unconstrained): f_fixed + p_E loads
+      Vector<double>       f_fixed; ///< the deck's loads only
       /// Per active cell: (dof, int_K div phi_dof) so that int_K div u = sum value * u(dof).
       std::vector<std::vector<std::pair<types::global_dof_index, double>>> divergence;
       std::vector<double> cell_measures, face_measures;
       bool                solved_once = false;
       /// The last LU factorization of the contact Jacobian and the face rows it was built with.
-      std::unique_ptr<SparseLU>            factorization;
-      std::vector<Tensor<2, dim>>          factorized_AlR, factorized_AjR;
+      std::unique_ptr<SparseLU>   factorization;
+      std::vector<Tensor<2, dim>> factorized_AlR, factorized_AjR;
       /// Schur complement on the multipliers (built at the first solve(), kept while K is).
       /// y = J x for the linearization of solve() with face rows AlR, AjR (Schur refinement).
       void
       apply_linearization(const std::vector<Tensor<2, dim>> &AlR,
-                          const std::vector<Tensor<2, dim>> &AjR, const Vector<double> &x,
-                          Vector<double> &y) const;
+                          const std::vector<Tensor<2, dim>> &AjR,
+                          const Vector<double>              &x,
+                          Vector<double>                    &y) const;
       std::unique_ptr<MultiplierSchurComplement<dim>> schur;
       /// The elasticity block is singular (Cholesky failed): the full system is solved.
       bool schur_unavailable = false;
@@ -254,9 +258,9 @@ namespace porofrac
     public:
       /// LU factorizations computed so far (each solve() reuses the last one while no face row
       /// of the Jacobian changes).
-      unsigned int n_factorizations = 0;
-      Vector<double>       u;           ///< displacement
-      Vector<double>       lambda;      ///< dim per face
+      unsigned int   n_factorizations = 0;
+      Vector<double> u;      ///< displacement
+      Vector<double> lambda; ///< dim per face
 
       /// B: for face f, entries (dof, component, +-int_sigma phi) so that int [u] = sum.
       using CouplingEntry = mechanics::CouplingEntry;

@@ -27,7 +27,8 @@ namespace porofrac
      */
     template <int dim>
     void
-    write_fracture_table_rows(std::ostream &out, const ContactProblem<dim> &problem,
+    write_fracture_table_rows(std::ostream              &out,
+                              const ContactProblem<dim> &problem,
                               const std::vector<double> *aperture = nullptr,
                               const double              *time     = nullptr);
   } // namespace mechanics

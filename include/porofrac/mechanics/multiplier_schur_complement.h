@@ -3,6 +3,7 @@
 #define POROFRAC_MECHANICS_MULTIPLIER_SCHUR_COMPLEMENT_H
 
 #include <deal.II/base/tensor.h>
+
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -79,8 +80,8 @@ namespace porofrac
 
       /// Wall times (s): Cholesky factorization, forming W, dense LU factorizations so far, and
       /// the sparse triangular solves of solve().
-      double time_cholesky = 0, time_form_W = 0, time_dense_lu = 0;
-      mutable double time_solves = 0;
+      double         time_cholesky = 0, time_form_W = 0, time_dense_lu = 0;
+      mutable double time_solves            = 0;
       unsigned int   n_dense_factorizations = 0;
       /// Nonzeros of Y = L^{-1} P J^T (sum of the reaches of the fracture-face columns).
       std::size_t reach_entries = 0;
@@ -92,22 +93,22 @@ namespace porofrac
       }
 
     private:
-      const unsigned int                       n_u, n_f;
-      std::vector<std::vector<CouplingEntry>>  entries; ///< unconstrained coupling entries
-      std::vector<double>                      measures;
-      SparseCholesky                           K;
-      FullMatrix<double>                       W; ///< J K^{-1} B^T
-      std::vector<Tensor<2, dim>>              rows_l, rows_j;
+      const unsigned int                      n_u, n_f;
+      std::vector<std::vector<CouplingEntry>> entries; ///< unconstrained coupling entries
+      std::vector<double>                     measures;
+      SparseCholesky                          K;
+      FullMatrix<double>                      W; ///< J K^{-1} B^T
+      std::vector<Tensor<2, dim>>             rows_l, rows_j;
       /// Per face: rows with a jump term (kept in the dense system) and without (eliminated),
       /// E_f^+ (dim x free rows), the null-space basis N_f of E_f (dim x kept rows), and the
       /// offset of the face's kept rows / reduced unknowns t_f in the dense system.
-      std::vector<std::vector<unsigned int>>   kept_rows, free_rows;
-      std::vector<FullMatrix<double>>          pseudo_inverse, null_basis;
-      std::vector<unsigned int>                offset;
+      std::vector<std::vector<unsigned int>> kept_rows, free_rows;
+      std::vector<FullMatrix<double>>        pseudo_inverse, null_basis;
+      std::vector<unsigned int>              offset;
       /// LU factors of the equilibrated reduced Schur complement (A_l - A_j W) N on kept rows.
-      LAPACKFullMatrix<double>                 S;
-      std::vector<double>                      row_scale;
-      bool                                     factorized = false;
+      LAPACKFullMatrix<double> S;
+      std::vector<double>      row_scale;
+      bool                     factorized = false;
     };
   } // namespace mechanics
 } // namespace porofrac

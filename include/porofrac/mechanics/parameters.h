@@ -17,18 +17,18 @@ namespace porofrac
     /// A point constraint: fix components of u at the mesh vertices located at @p point.
     struct PointConstraint
     {
-      std::vector<double>                  point;
+      std::vector<double>                 point;
       std::map<unsigned int, std::string> values; ///< component -> expression (constant)
     };
 
     /// Everything ContactProblem needs, independent of the deck.
     struct ContactParameters
     {
-      double        young_modulus = 1;
-      double        poisson_ratio = 0;
-      ContactMethod method        = ContactMethod::active_set;
-      double        c             = 1e9;
-      bool          stick_guess   = true;
+      double        young_modulus    = 1;
+      double        poisson_ratio    = 0;
+      ContactMethod method           = ContactMethod::active_set;
+      double        c                = 1e9;
+      bool          stick_guess      = true;
       double        initial_lambda_n = 100;
       unsigned int  max_iterations   = 50;
       double        tolerance        = 1e-6;
@@ -76,7 +76,8 @@ namespace porofrac
      * named x, y, z. Errors name @p parameter.
      */
     std::map<types::boundary_id, std::map<unsigned int, std::string>>
-    parse_component_map(const std::string &text, const unsigned int dim,
+    parse_component_map(const std::string &text,
+                        const unsigned int dim,
                         const std::string &parameter);
 
     /// Parses "id: expr; id: expr" (or one expression for all, key numbers::invalid_unsigned_int).
@@ -85,7 +86,8 @@ namespace porofrac
 
     /// Parses "(px, py): x=v, y=v; (px, py): ..." into point constraints.
     std::vector<PointConstraint>
-    parse_point_constraints(const std::string &text, const unsigned int dim,
+    parse_point_constraints(const std::string &text,
+                            const unsigned int dim,
                             const std::string &parameter);
   } // namespace mechanics
 } // namespace porofrac

@@ -27,8 +27,9 @@ namespace porofrac
      */
     template <int dim>
     void
-    run_scene(const dealii::ParameterHandler &prm, const porofrac::geometry::CutMesh<dim> &mesh,
-              porofrac::io::RunContext &context);
+    run_scene(const dealii::ParameterHandler         &prm,
+              const porofrac::geometry::CutMesh<dim> &mesh,
+              porofrac::io::RunContext               &context);
   } // namespace mechanics
 } // namespace porofrac
 

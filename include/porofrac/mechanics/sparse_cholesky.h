@@ -61,7 +61,7 @@ namespace porofrac
        */
       std::size_t
       inverse_gram(const std::vector<std::vector<std::pair<unsigned int, double>>> &columns,
-                   FullMatrix<double>                                             &G) const;
+                   FullMatrix<double>                                              &G) const;
       /// z = L^{-1} P z (forward half of a solve).
       void
       forward(std::vector<double> &z) const;
