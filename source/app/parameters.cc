@@ -3,7 +3,8 @@
 #include <porofrac/coupling/scene.h>
 #include <porofrac/flow/scene.h>
 #include <porofrac/geometry/parameters.h>
-#include <porofrac/mechanics/scene.h>
+#include <porofrac/io/output_parameters.h>
+#include <porofrac/mechanics/parameters.h>
 
 namespace porofrac
 {
@@ -24,31 +25,10 @@ namespace porofrac
                         Patterns::Anything(),
                         "Name written to summary.json ('scene'); empty: the deck's file name.");
 
-      prm.enter_subsection("Output");
-      prm.declare_entry("Directory",
-                        "output",
-                        Patterns::Anything(),
-                        "Directory for all output files (created if needed); the command-line "
-                        "option --output-dir overrides it.");
-      prm.declare_entry("Format",
-                        "vtu",
-                        Patterns::Selection("vtu|vtk|none"),
-                        "Format of field files: XML VTK (vtu), legacy ASCII VTK (vtk), or none.");
-      prm.declare_entry("Verbosity",
-                        "normal",
-                        Patterns::Selection("quiet|normal|verbose"),
-                        "quiet: only the results report (what tests compare); normal: progress; "
-                        "verbose: every nonlinear iteration.");
-      prm.declare_entry("Timer output",
-                        "summary",
-                        Patterns::Selection("summary|none"),
-                        "Print the TimerOutput table at the end (never in quiet mode).");
-      prm.leave_subsection();
+      io::OutputParameters::declare_parameters(prm);
 
       geometry::GeometryParameters::declare_parameters(prm);
-      // MECHANICS HOOK (declare)
-      mechanics::declare_parameters(prm);
-      // FLOW HOOK (declare)
+      mechanics::ContactParameters::declare_parameters(prm);
       flow::declare_parameters(prm);
       coupling::declare_parameters(prm);
     }

@@ -3,19 +3,18 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <porofrac/app/contact_mechanics_scene.h>
 #include <porofrac/app/mesh_report.h>
 #include <porofrac/app/simulator.h>
 #include <porofrac/base/config.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/coupling/scene.h>
+#include <porofrac/flow/scene.h>
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/geometry/parameters.h>
+#include <porofrac/io/output_parameters.h>
 #include <porofrac/io/run_context.h>
-// MECHANICS HOOK (include)
-#include <porofrac/mechanics/scene.h>
-// FLOW HOOK (include)
-#include <porofrac/coupling/scene.h>
-#include <porofrac/flow/scene.h>
 
 #include <filesystem>
 #include <iostream>
@@ -39,11 +38,11 @@ namespace porofrac
       if (scene.empty())
         scene = deck.stem().string();
 
-      prm.enter_subsection("Output");
-      const std::string format       = prm.get("Format");
-      const std::string verbosity    = prm.get("Verbosity");
-      const bool        print_timers = prm.get("Timer output") == "summary" && verbosity != "quiet";
-      prm.leave_subsection();
+      io::OutputParameters output;
+      output.parse_parameters(prm);
+      const std::string format       = output.format;
+      const std::string verbosity    = output.verbosity;
+      const bool        print_timers = output.timer_summary && verbosity != "quiet";
 
       std::error_code ec;
       std::filesystem::create_directories(output_directory, ec);
@@ -88,12 +87,12 @@ namespace porofrac
 
       if (physics == "contact mechanics")
         {
-          // MECHANICS HOOK (run)
-          mechanics::run_scene<dim>(prm, *mesh, context);
+          PhysicsParameters physics_parameters;
+          physics_parameters.mechanics.parse_parameters(prm, dim);
+          run_contact_mechanics_scene(physics_parameters, *mesh, context);
         }
       else if (physics == "two-phase flow")
         {
-          // FLOW HOOK (run)
           flow::run_scene<dim>(prm, *mesh, context);
         }
       else if (physics == "poromechanics")

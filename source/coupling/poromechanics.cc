@@ -69,11 +69,8 @@ namespace porofrac
                                          std::vector<double>(x.begin() + n_matrix, x.end()),
                                          parameters.biot_coefficient);
       // Warm start from the previous solve (paper 5.3: the previous time step's solution).
-      mechanics.solve(/*warm_start=*/true);
-      report.mechanics_iterations += mechanics.iterations;
-      if (!mechanics.converged)
-        throw SolverFailure("contact mechanics did not converge in " +
-                            std::to_string(mechanics.iterations) + " iterations");
+      const auto &statistics = mechanics.solve(/*warm_start=*/true);
+      report.mechanics_iterations += statistics.iterations;
     }
 
 

@@ -10,8 +10,7 @@
 #include <porofrac/flow/model.h>
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/io/text.h>
-#include <porofrac/mechanics/fracture_table.h>
-#include <porofrac/mechanics/scene.h>
+#include <porofrac/mechanics/contact_output.h>
 
 #include <algorithm>
 #include <cmath>
@@ -193,8 +192,8 @@ namespace porofrac
     void
     run_scene(ParameterHandler &prm, const geometry::CutMesh<dim> &mesh, io::RunContext &context)
     {
-      const mechanics::ContactParameters mechanics_parameters =
-        mechanics::parse_parameters(prm, dim);
+      mechanics::ContactParameters mechanics_parameters;
+      mechanics_parameters.parse_parameters(prm, dim);
       CouplingParameters parameters;
       parameters.parse_parameters(prm);
       std::vector<double> output_times;
@@ -255,7 +254,7 @@ namespace porofrac
       Poromechanics<dim> pm(mech, flow, parameters, context.verbose, context.timer);
       context.progress << "*** Poromechanics: initial state" << std::endl;
       pm.initialize();
-      const unsigned int initial_mechanics_iterations = mech.iterations;
+      const unsigned int initial_mechanics_iterations = mech.statistics().iterations;
       report_states(context.report, mech, "t = 0");
       context.report << "Coupling: t = 0, mean fracture width " << std::scientific
                      << std::setprecision(4) << pm.mean_fracture_width() << " m"
@@ -405,7 +404,7 @@ namespace porofrac
       m["nonlinear_iterations"]     = total_mechanics;
       m["initial_state_iterations"] = initial_mechanics_iterations;
       // LU factorizations of the contact system (reused while no face row changes).
-      m["lu_factorizations"]                             = mech.n_factorizations;
+      m["lu_factorizations"]                             = mech.n_factorizations();
       m["converged"]                                     = true;
       const auto c                                       = count_states(mech, -1);
       m["n_open"]                                        = c[0];

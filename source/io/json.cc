@@ -108,6 +108,14 @@ namespace porofrac
       return members.back().second;
     }
 
+    double
+    Json::as_number() const
+    {
+      return kind == Type::number ? number : (kind == Type::integer ? double(integer) : 0.);
+    }
+
+
+
     bool
     Json::has(const std::string &key) const
     {

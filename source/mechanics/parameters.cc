@@ -2,14 +2,20 @@
 #include <deal.II/base/utilities.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/io/text.h>
+#include <porofrac/mechanics/contact_linear_solver.h>
+#include <porofrac/mechanics/contact_method.h>
 #include <porofrac/mechanics/parameters.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace porofrac
 {
   namespace mechanics
   {
+    using namespace dealii;
+
     namespace
     {
       std::string
@@ -64,6 +70,318 @@ namespace porofrac
         return m;
       }
     } // namespace
+
+    void
+    ContactParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Mechanics");
+      prm.declare_entry("Young modulus", "25e9", Patterns::Double(), "E (Pa).");
+      prm.declare_entry("Poisson ratio",
+                        "0.25",
+                        Patterns::Double(),
+                        "nu, in (-1, 0.5). 2D is plane strain.");
+      prm.declare_entry("Solver",
+                        "active set",
+                        Patterns::Selection(ContactMethodRegistry<2>::instance().selection()),
+                        "Contact method: " + ContactMethodRegistry<2>::instance().documentation());
+      prm.declare_entry("Complementarity parameter c",
+                        "1e9",
+                        Patterns::Double(),
+                        "c > 0 in the complementarity functions (25)-(26) (Pa/m).");
+      prm.declare_entry("Initial guess",
+                        "stick",
+                        Patterns::Selection("open|stick"),
+                        "open: lambda = 0, u = 0; stick: lambda_n = Initial normal multiplier, "
+                        "lambda_tau = 0, u = 0.");
+      prm.declare_entry("Initial normal multiplier",
+                        "100",
+                        Patterns::Double(),
+                        "lambda_n of the stick initial guess (Pa).");
+      prm.declare_entry("Max iterations",
+                        "50",
+                        Patterns::Integer(1),
+                        "Contact iterations before the solve fails.");
+      prm.declare_entry("Tolerance",
+                        "1e-6",
+                        Patterns::Double(),
+                        "Relative residual of the contact iterations.");
+      prm.declare_entry("Line search",
+                        "false",
+                        Patterns::Bool(),
+                        "Globalization: backtracking (Armijo) line search on the merit "
+                        "max(scaled residual of (25)-(26) / |lambda|, mechanical residual / |f|).");
+      prm.declare_entry("Line search halvings",
+                        "6",
+                        Patterns::Integer(0),
+                        "At most this many step halvings per iteration; without sufficient "
+                        "decrease the best step tried is taken.");
+      prm.declare_entry("Line search memory",
+                        "1",
+                        Patterns::Integer(1),
+                        "Sufficient decrease is measured against the largest merit of the last "
+                        "M iterates (non-monotone line search); 1 is the monotone Armijo rule.");
+      prm.declare_entry("Line search trigger",
+                        "always",
+                        Patterns::Selection("always|stagnation"),
+                        "always: from the first iteration; stagnation: full steps until the "
+                        "relative residual of an iterate is not below that of the previous one, "
+                        "the line search from then on.");
+      prm.declare_entry("Cycle damping",
+                        "0",
+                        Patterns::Double(),
+                        "Globalization: when the face states (open/stick/slip) of an iterate "
+                        "repeat those of an earlier, non-consecutive iterate, the step is "
+                        "multiplied by this factor in (0, 1); 0 switches the safeguard off.");
+      prm.declare_entry("Continuation c start",
+                        "0",
+                        Patterns::Double(),
+                        "Globalization: continuation in c; the iterations start with this c and "
+                        "move it towards `Complementarity parameter c` by `Continuation factor` "
+                        "whenever the face states of an iterate equal those of the previous one "
+                        "(0: off).");
+      prm.declare_entry("Continuation factor",
+                        "100",
+                        Patterns::Double(),
+                        "Factor (> 1) by which c moves at each continuation step.");
+      prm.declare_entry("Reuse factorization iterations",
+                        "0",
+                        Patterns::Integer(0),
+                        "Linear solves of the contact iterations: first try GMRES preconditioned "
+                        "by the LU factors of the last factorized matrix (only face rows change), "
+                        "at most this many GMRES steps (relative residual 1e-12), then "
+                        "refactorize; 0 factorizes every iteration.");
+      prm.declare_entry("Linear solver",
+                        "full system",
+                        Patterns::Selection(ContactLinearSolverRegistry<2>::instance().selection()),
+                        "Linear solves of the contact iterations. " +
+                          ContactLinearSolverRegistry<2>::instance().documentation());
+      prm.declare_entry("Report linear solve time",
+                        "false",
+                        Patterns::Bool(),
+                        "Also time one linear elasticity solve (every fracture open, UMFPACK "
+                        "factorization + solve) on the same mesh; written to summary.json "
+                        "(mechanics/linear_solve_time_s).");
+      prm.declare_entry("Write P2 reconstruction",
+                        "false",
+                        Patterns::Bool(),
+                        "2D: also write fracture_p2.csv, the paper's P2 reconstructions of the "
+                        "jump and the multiplier (as in the 5.2.1 errors) at 3 Gauss points per "
+                        "fracture face, in the face's local frame (n+, tangent), with the face's "
+                        "abscissa interval: enough to evaluate the P2 fields anywhere on the "
+                        "fracture (self-convergence studies, contrib/mechanics-convergence).");
+      prm.declare_entry("Iteration table",
+                        "false",
+                        Patterns::Bool(),
+                        "After the solve with the settings above (whose results are reported and "
+                        "written), solve again for every contact method (active set, semismooth "
+                        "newton) x c in {1e6, 1e9, 1e11} x initial guess (stick, open), each "
+                        "from a cold start (initial guess, no state of the previous solve; the "
+                        "other Mechanics settings, e.g. the globalization, as above), sharing the "
+                        "assembled elasticity block and, with `Linear solver = schur complement`, "
+                        "its Cholesky factors and W. Iteration counts, convergence and residual "
+                        "histories (paper Tables 1-4) go to summary.json "
+                        "(mechanics/iteration_table) and to the results report.");
+      prm.declare_entry("Dirichlet",
+                        "",
+                        Patterns::Anything(),
+                        "Prescribed displacement components per outer boundary id, "
+                        "'id: x=expr, y=expr; id: ...' (muparser in x, y, z).");
+      prm.declare_entry("Traction",
+                        "",
+                        Patterns::Anything(),
+                        "Traction vector per boundary id, 'id: x=expr, y=expr; ...' (Pa).");
+      prm.declare_entry("Normal pressure",
+                        "",
+                        Patterns::Anything(),
+                        "Pressure p per boundary id (traction -p n), 'id: expr; id: expr'.");
+      prm.declare_entry(
+        "Point constraints",
+        "",
+        Patterns::Anything(),
+        "Components fixed at mesh vertices, '(px, py): x=value; (px, py): y=value'. "
+        "Every point must be a vertex of the mesh.");
+      prm.declare_entry("Friction coefficient",
+                        "0",
+                        Patterns::Anything(),
+                        "F >= 0 per fracture, 'id: expr; id: expr', or one expression for all; "
+                        "muparser in x, y (, z) and d, the distance to the fracture's tips.");
+      prm.declare_entry("Friction law",
+                        "coulomb",
+                        Patterns::Selection(FrictionLawRegistry::instance().selection()),
+                        "How F depends on the state of a face: " +
+                          FrictionLawRegistry::instance().documentation());
+      FrictionLawRegistry::instance().declare_parameters(prm);
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated components (muparser in x, y, z), empty for zero.");
+      prm.declare_entry("Pre-stress",
+                        "",
+                        Patterns::Anything(),
+                        "Constant pre-stress sigma0, dim*dim comma-separated components row by "
+                        "row (Pa, tension positive: the stress is C eps(u) + sigma0 - b p_E I), "
+                        "empty for zero.");
+      prm.declare_entry("Axisymmetric",
+                        "false",
+                        Patterns::Bool(),
+                        "2D only: the mesh is the radial section of a body of revolution, with "
+                        "x (first coordinate) along the axis and r = y >= 0; hoop strain u_r/r, "
+                        "integrals weighted by 2 pi r (multipliers stay tractions in Pa).");
+      prm.declare_entry("Pre-stress hoop",
+                        "0",
+                        Patterns::Double(),
+                        "Axisymmetric only: the sigma0_theta theta component of the pre-stress "
+                        "(Pa; tension positive, like Pre-stress).");
+      prm.declare_entry("Report stress range",
+                        "false",
+                        Patterns::Bool(),
+                        "Print the range of each stress component at the cell centroids (patch "
+                        "tests).");
+      prm.declare_entry("Analytical solution",
+                        "none",
+                        Patterns::Selection("none|single fracture"),
+                        "Errors against the analytical solution of Section 5.2.1.");
+      prm.declare_entry("Remote stress",
+                        "1e8",
+                        Patterns::Double(),
+                        "5.2.1: remote compression sigma (Pa).");
+      prm.declare_entry("Fracture angle",
+                        "20",
+                        Patterns::Double(),
+                        "5.2.1: angle psi of the fracture to the x axis (degrees).");
+      prm.declare_entry("Fracture half length", "1", Patterns::Double(), "5.2.1: l (m).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    ContactParameters::parse_parameters(const ParameterHandler &prm, const unsigned int dim)
+    {
+      const std::vector<std::string> p = {"Mechanics"};
+      young_modulus                    = prm.get_double(p, "Young modulus");
+      poisson_ratio                    = prm.get_double(p, "Poisson ratio");
+      method                           = prm.get(p, "Solver");
+      c                                = prm.get_double(p, "Complementarity parameter c");
+      stick_guess                      = prm.get(p, "Initial guess") == "stick";
+      initial_lambda_n                 = prm.get_double(p, "Initial normal multiplier");
+      max_iterations                   = prm.get_integer(p, "Max iterations");
+      tolerance                        = prm.get_double(p, "Tolerance");
+      line_search                      = prm.get_bool(p, "Line search");
+      line_search_halvings             = prm.get_integer(p, "Line search halvings");
+      line_search_memory               = prm.get_integer(p, "Line search memory");
+      line_search_on_stagnation        = prm.get(p, "Line search trigger") == "stagnation";
+      cycle_damping                    = prm.get_double(p, "Cycle damping");
+      c_start                          = prm.get_double(p, "Continuation c start");
+      continuation_factor              = prm.get_double(p, "Continuation factor");
+      linear_solver                    = prm.get(p, "Linear solver");
+      reuse_iterations                 = prm.get_integer(p, "Reuse factorization iterations");
+
+      dirichlet = parse_component_map(prm.get(p, "Dirichlet"), dim, "Mechanics/Dirichlet");
+      traction  = parse_component_map(prm.get(p, "Traction"), dim, "Mechanics/Traction");
+      pressure.clear();
+      for (const auto &[id, e] :
+           parse_scalar_map(prm.get(p, "Normal pressure"), "Mechanics/Normal pressure"))
+        {
+          check_input(id != numbers::invalid_unsigned_int,
+                      "Mechanics/Normal pressure",
+                      "expected 'id: expression'");
+          pressure[id] = e;
+        }
+      point_constraints = parse_point_constraints(prm.get(p, "Point constraints"),
+                                                  dim,
+                                                  "Mechanics/Point constraints");
+      friction.clear();
+      for (const auto &[id, e] :
+           parse_scalar_map(prm.get(p, "Friction coefficient"), "Mechanics/Friction coefficient"))
+        if (id == numbers::invalid_unsigned_int)
+          friction_all = e;
+        else
+          friction[id] = e;
+      friction_law_name = prm.get(p, "Friction law");
+      auto law =
+        FrictionLawRegistry::instance().create(friction_law_name, "Mechanics/Friction law");
+      law->parse_parameters(prm);
+      friction_law = std::move(law);
+
+      body_force.clear();
+      const std::string bf = prm.get(p, "Body force");
+      if (!Utilities::trim(bf).empty())
+        body_force = Utilities::split_string_list(bf, ',');
+      pre_stress.clear();
+      const std::string ps = prm.get(p, "Pre-stress");
+      if (!Utilities::trim(ps).empty())
+        for (const auto &s : Utilities::split_string_list(ps, ','))
+          try
+            {
+              pre_stress.push_back(Utilities::string_to_double(s));
+            }
+          catch (...)
+            {
+              throw InputError("Mechanics/Pre-stress", "'" + s + "' is not a number");
+            }
+      axisymmetric    = prm.get_bool(p, "Axisymmetric");
+      pre_stress_hoop = prm.get_double(p, "Pre-stress hoop");
+
+      reports.linear_solve_time    = prm.get_bool(p, "Report linear solve time");
+      reports.p2_reconstruction    = prm.get_bool(p, "Write P2 reconstruction");
+      reports.iteration_table      = prm.get_bool(p, "Iteration table");
+      reports.stress_range         = prm.get_bool(p, "Report stress range");
+      reports.analytical_solution  = prm.get(p, "Analytical solution");
+      reports.remote_stress        = prm.get_double(p, "Remote stress");
+      reports.fracture_angle       = prm.get_double(p, "Fracture angle");
+      reports.fracture_half_length = prm.get_double(p, "Fracture half length");
+      validate(dim);
+    }
+
+
+
+    void
+    ContactParameters::validate(const unsigned int dim) const
+    {
+      check_input(young_modulus > 0 && std::isfinite(young_modulus),
+                  "Mechanics/Young modulus",
+                  "must be positive");
+      check_input(poisson_ratio < 0.5 && poisson_ratio > -1,
+                  "Mechanics/Poisson ratio",
+                  "must be below 0.5 and above -1");
+      check_input(ContactMethodRegistry<2>::instance().has(method),
+                  "Mechanics/Solver",
+                  "'" + method + "' is not one of " +
+                    ContactMethodRegistry<2>::instance().selection());
+      check_input(c > 0 && std::isfinite(c),
+                  "Mechanics/Complementarity parameter c",
+                  "must be positive");
+      check_input(tolerance > 0, "Mechanics/Tolerance", "must be positive");
+      check_input(max_iterations > 0, "Mechanics/Max iterations", "must be positive");
+      check_input(cycle_damping >= 0 && cycle_damping < 1,
+                  "Mechanics/Cycle damping",
+                  "must be in [0, 1)");
+      check_input(c_start >= 0, "Mechanics/Continuation c start", "must be >= 0");
+      check_input(continuation_factor > 1, "Mechanics/Continuation factor", "must be > 1");
+      check_input(ContactLinearSolverRegistry<2>::instance().has(linear_solver),
+                  "Mechanics/Linear solver",
+                  "'" + linear_solver + "' is not one of " +
+                    ContactLinearSolverRegistry<2>::instance().selection());
+      check_input(FrictionLawRegistry::instance().has(friction_law_name),
+                  "Mechanics/Friction law",
+                  "'" + friction_law_name + "' is not one of " +
+                    FrictionLawRegistry::instance().selection());
+      check_input(body_force.empty() || body_force.size() == dim,
+                  "Mechanics/Body force",
+                  "needs " + std::to_string(dim) + " components");
+      check_input(pre_stress.empty() || pre_stress.size() == dim * dim,
+                  "Mechanics/Pre-stress",
+                  "needs " + std::to_string(dim * dim) + " components");
+      check_input(!axisymmetric || dim == 2,
+                  "Mechanics/Axisymmetric",
+                  "the axisymmetric mode needs Dimension = 2");
+      check_input(axisymmetric || pre_stress_hoop == 0,
+                  "Mechanics/Pre-stress hoop",
+                  "a hoop pre-stress needs Axisymmetric = true");
+    }
+
+
 
     std::map<types::boundary_id, std::map<unsigned int, std::string>>
     parse_component_map(const std::string &text,

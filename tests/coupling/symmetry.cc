@@ -40,7 +40,7 @@
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/io/deck.h>
 #include <porofrac/mechanics/contact_problem.h>
-#include <porofrac/mechanics/scene.h>
+#include <porofrac/mechanics/parameters.h>
 
 #include <algorithm>
 #include <array>
@@ -160,7 +160,9 @@ main(int argc, char **argv)
     n.update_tolerance =
       std::min(n.update_tolerance, coupling_parameters.inner_flow_update_tolerance);
   });
-  mechanics::ContactProblem<2> mech(mesh, mechanics::parse_parameters(prm, 2), quiet, timer);
+  mechanics::ContactParameters mechanics_parameters;
+  mechanics_parameters.parse_parameters(prm, 2);
+  mechanics::ContactProblem<2> mech(mesh, mechanics_parameters, quiet, timer);
   mech.setup();
   coupling::Poromechanics<2> pm(mech, flow, coupling_parameters, quiet, timer);
   pm.initialize();

@@ -5,6 +5,7 @@
 // expected one, and the semi-smooth Newton slip rows have a zero right-hand side at a consistent
 // iterate (lambda_tau = F lambda_n a/|a|). The law's parameter scale is that of the paper (Pa, m).
 #include <porofrac/mechanics/contact_law.h>
+#include <porofrac/mechanics/contact_method.h>
 
 #include <cmath>
 #include <iomanip>
@@ -81,23 +82,26 @@ main()
   check("slip", law, l, j);
 
   // Semi-smooth Newton rows at a consistent slip iterate: lambda_tau = F lambda_n a/|a|.
-  l    = Tensor<1, 3>();
-  j    = Tensor<1, 3>();
-  l[0] = 1e7;
-  j[1] = 3e-3;
-  j[2] = 4e-3;
-  l[1] = 0.6e7 * 0.6;
-  l[2] = 0.6e7 * 0.8;
-  Tensor<2, 3>    Al, Aj;
-  Tensor<1, 3>    r;
-  const FaceState s = law.rows(ContactMethod::semismooth_newton, l, j, Al, Aj, r);
+  l                   = Tensor<1, 3>();
+  j                   = Tensor<1, 3>();
+  l[0]                = 1e7;
+  j[1]                = 3e-3;
+  j[2]                = 4e-3;
+  l[1]                = 0.6e7 * 0.6;
+  l[2]                = 0.6e7 * 0.8;
+  const auto      ssn = ContactMethodRegistry<3>::instance().create("semismooth newton", "test");
+  const auto      as  = ContactMethodRegistry<3>::instance().create("active set", "test");
+  LocalRows<3>    rows;
+  const FaceState s  = ssn->rows(law, l, j, rows);
+  const auto     &Al = rows.A_lambda, &Aj = rows.A_jump;
+  const auto     &r = rows.rhs;
   std::cout << "consistent slip: state " << name(s) << ", |residual| / lambda_n "
             << (law.residual(l, j, true).norm() / l[0] < 1e-12 ? "< 1e-12" : "FAILED")
             << ", row rhs / lambda_n " << (r.norm() / l[0] < 1e-12 ? "< 1e-12" : "FAILED")
             << ", row residual "
             << ((Al * l + Aj * j - r).norm() / l[0] < 1e-9 ? "< 1e-9" : "FAILED") << std::endl;
   // Active-set rows at the same iterate are satisfied too.
-  law.rows(ContactMethod::active_set, l, j, Al, Aj, r);
+  as->rows(law, l, j, rows);
   std::cout << "active set rows at the same iterate: "
             << ((Al * l + Aj * j - r).norm() / l[0] < 1e-9 ? "satisfied" : "FAILED") << std::endl;
   return 0;

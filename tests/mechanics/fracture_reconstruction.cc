@@ -59,19 +59,19 @@ main()
                  Quadrature<2>(fe.get_unit_support_points()),
                  update_quadrature_points);
   std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-  problem.u = 0;
+  Vector<double> u(problem.n_displacement_dofs()), lambda(problem.multipliers().size());
   for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
     if (cell->center()[1] > 0.5)
       {
         fv.reinit(cell);
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < local.size(); ++i)
-          problem.u(local[i]) =
-            Q(fv.quadrature_point(i)) * e[fe.system_to_component_index(i).first];
+          u(local[i]) = Q(fv.quadrature_point(i)) * e[fe.system_to_component_index(i).first];
       }
   for (const auto &face : mesh->fracture_faces)
     for (unsigned int d = 0; d < 2; ++d)
-      problem.lambda(2 * face.index + d) = (d == 0 ? 3e6 : -2e6);
+      lambda(2 * face.index + d) = (d == 0 ? 3e6 : -2e6);
+  problem.set_state(u, lambda);
 
   std::cout << std::scientific << std::setprecision(2);
   std::cout << "fracture faces: " << mesh->fracture_faces.size() << std::endl;
@@ -118,9 +118,10 @@ main()
   // (by about half a face step) but is continuous along the fracture.
   for (const auto &face : mesh->fracture_faces)
     {
-      problem.lambda(2 * face.index)     = 1e6 * face.abscissa;
-      problem.lambda(2 * face.index + 1) = 0;
+      lambda(2 * face.index)     = 1e6 * face.abscissa;
+      lambda(2 * face.index + 1) = 0;
     }
+  problem.set_state(u, lambda);
   double dev = 0;
   for (const auto &v : mechanics::reconstruct_fracture_fields(problem, 4))
     dev = std::max(dev, std::abs(v.lambda[0] - 1e6 * v.abscissa) / 1e6);

@@ -59,6 +59,9 @@ namespace porofrac
 
       bool
       has(const std::string &key) const;
+      /// The value of a number (integer or floating point); 0 for other types.
+      double
+      as_number() const;
       Type
       type() const
       {

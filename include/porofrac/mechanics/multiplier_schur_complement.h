@@ -9,6 +9,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <porofrac/mechanics/coupling_entry.h>
 #include <porofrac/mechanics/sparse_cholesky.h>
 
 #include <memory>
@@ -19,15 +20,6 @@ namespace porofrac
   namespace mechanics
   {
     using namespace dealii;
-
-    /// One term of the coupling int_sigma lambda . [v] (paper eq. (10)) of a fracture face:
-    /// displacement dof, its vector component and +-int_sigma phi_dof.
-    struct CouplingEntry
-    {
-      types::global_dof_index dof;
-      unsigned int            component;
-      double                  value;
-    };
 
     /**
      * Linear solves of the contact iterations through the Schur complement on the multipliers.

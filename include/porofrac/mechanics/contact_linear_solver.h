@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_MECHANICS_CONTACT_LINEAR_SOLVER_H
+#define POROFRAC_MECHANICS_CONTACT_LINEAR_SOLVER_H
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/vector.h>
+
+#include <porofrac/base/registry.h>
+#include <porofrac/mechanics/elasticity_system.h>
+#include <porofrac/mechanics/parameters.h>
+
+#include <string>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    /// Work done by a contact linear solver since it was created (wall times in s).
+    struct ContactLinearSolverStatistics
+    {
+      /// Factorizations (of the whole Jacobian, or of the dense Schur complement).
+      unsigned int factorizations = 0;
+      /// Solves done by GMRES preconditioned by older factors instead of a factorization.
+      unsigned int reused_factorizations = 0;
+      double       time_factorization    = 0;
+      double       time_solves           = 0;
+      /// Set-up that depends on the mesh only (Cholesky of K and W for the Schur complement).
+      double time_cholesky = 0, time_form_W = 0;
+    };
+
+    /**
+     * The linear solves of the contact iterations: J x = rhs for the Jacobian of the contact
+     * problem (27), whose displacement rows are those of the ElasticitySystem (K and B^T, with
+     * constraints) and whose multiplier rows are the face rows of the contact method. Only the
+     * face rows change from one iteration to the next, and often only a few of them: solvers
+     * keep what they can (factorizations, Schur complements) while rows do not change.
+     *
+     * Implementations register with ContactLinearSolverRegistry (deck entry
+     * Mechanics/Linear solver, the name is the deck's value). This interface is where iterative
+     * and distributed solvers plug in: they receive the same system and rows.
+     */
+    template <int dim>
+    class ContactLinearSolver
+    {
+    public:
+      virtual ~ContactLinearSolver() = default;
+
+      /**
+       * Solves J x = rhs (rhs zero on constrained displacement dofs) with face rows @p rows.
+       * @p n_changed_faces is the number of faces whose state changed since the previous call
+       * (a hint for solvers that update old factors). Throws SolverFailure if it cannot.
+       */
+      virtual void
+      solve(const FaceRows<dim>  &rows,
+            const unsigned int    n_changed_faces,
+            const Vector<double> &rhs,
+            Vector<double>       &x) = 0;
+
+      /// Forgets everything that depends on face rows (the next solve refactorizes).
+      virtual void
+      reset() = 0;
+
+      /// What solves the systems, for reports ("full system", ...).
+      virtual std::string
+      name() const = 0;
+
+      const ContactLinearSolverStatistics &
+      statistics() const
+      {
+        return stats;
+      }
+
+    protected:
+      ContactLinearSolverStatistics stats;
+    };
+
+    template <int dim>
+    using ContactLinearSolverRegistry = Registry<ContactLinearSolver<dim>,
+                                                 const ElasticitySystem<dim> &,
+                                                 const ContactParameters &,
+                                                 ConditionalOStream &,
+                                                 TimerOutput &>;
+  } // namespace mechanics
+} // namespace porofrac
+
+#endif

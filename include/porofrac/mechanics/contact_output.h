@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_MECHANICS_CONTACT_OUTPUT_H
+#define POROFRAC_MECHANICS_CONTACT_OUTPUT_H
+
+#include <deal.II/base/tensor.h>
+
+#include <porofrac/geometry/mesh_output.h>
+#include <porofrac/mechanics/contact_problem.h>
+
+#include <ostream>
+#include <vector>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    /// "open", "stick" or "slip".
+    const char *
+    state_name(const FaceState state);
+
+    /// The contact quantities of one fracture face, in its local frame (n+, t1[, t2]).
+    template <int dim>
+    struct ContactFaceValues
+    {
+      Tensor<1, dim> jump;   ///< [u]_sigma: component 0 = [u]_n, then the tangential ones
+      Tensor<1, dim> lambda; ///< lambda_sigma, same frame
+      FaceState      state;
+      double         friction;
+
+      /// 2D: the signed tangential component; 3D: the magnitude of the tangential vector.
+      static double
+      tangential(const Tensor<1, dim> &v)
+      {
+        return dim == 2 ? v[1] : LocalContactLaw<dim>::tangential(v).norm();
+      }
+    };
+
+    template <int dim>
+    ContactFaceValues<dim>
+    contact_face_values(const ContactProblem<dim> &problem, const unsigned int f);
+
+    /**
+     * Appends the contact fields of every fracture face to @p fields (the fracture VTU of every
+     * physics): jump_n, jump_t, lambda_n, lambda_t, state (0 open, 1 stick, 2 slip) and
+     * friction. jump_t and lambda_t are signed in 2D; in 3D they are the magnitudes, and the
+     * components along t1 and t2 follow as jump_t1, jump_t2, lambda_t1, lambda_t2.
+     */
+    template <int dim>
+    void
+    append_contact_fields(const ContactProblem<dim> &problem, geometry::FractureFields &fields);
+
+    /**
+     * Header of fractures.csv: fracture_id, face_id, s, x, y[, z], jump_n, jump_t[, jump_t1,
+     * jump_t2], lambda_n, lambda_t[, lambda_t1, lambda_t2], state, aperture[, time] (3D adds
+     * z and the tangential components; @p with_time adds the time column).
+     */
+    void
+    write_fracture_table_header(std::ostream &out, const unsigned int dim, const bool with_time);
+
+    /// One row per fracture face (see the header). The aperture is @p aperture[f] when given,
+    /// else max(0, -[u]_n) (the opening).
+    template <int dim>
+    void
+    write_fracture_table_rows(std::ostream              &out,
+                              const ContactProblem<dim> &problem,
+                              const std::vector<double> *aperture = nullptr,
+                              const double              *time     = nullptr);
+
+    /// Writes the P2 displacement (patches of degree 2) to @p filename in @p format (vtu, vtk).
+    template <int dim>
+    void
+    write_displacement(const ContactProblem<dim> &problem,
+                       const std::string         &filename,
+                       const std::string         &format);
+  } // namespace mechanics
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_MECHANICS_CONTACT_SOLVER_H
+#define POROFRAC_MECHANICS_CONTACT_SOLVER_H
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <porofrac/mechanics/contact_law.h>
+#include <porofrac/mechanics/contact_linear_solver.h>
+#include <porofrac/mechanics/contact_method.h>
+#include <porofrac/mechanics/elasticity_system.h>
+#include <porofrac/mechanics/friction_field.h>
+#include <porofrac/mechanics/parameters.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    /// What one solve of the contact problem did (wall times in s).
+    struct ContactStatistics
+    {
+      unsigned int iterations = 0;
+      bool         converged  = false;
+      /// Relative residual of every iterate (the stopping criterion).
+      std::vector<double> residual_history;
+      /// Diagnostic: |G(x_k)| / |G(x_0)| with G of eq. (27) unscaled (mechanical rows in N,
+      /// C_n in Pa, C_tau in Pa^2), x_0 the initial guess: one reading of the paper's
+      /// "relative residual" (not used for stopping).
+      std::vector<double> initial_relative_history;
+      /// Step lengths taken (1 = full step), line-search backtracks, active-set cycles.
+      std::vector<double> step_history;
+      unsigned int        backtracks      = 0;
+      unsigned int        cycles_detected = 0;
+      /// Factorizations of this solve, and solves done by GMRES on older factors.
+      unsigned int factorizations = 0, reused_factorizations = 0;
+      /// Time in computing the face rows, factorizing, triangular solves, and residual and
+      /// line-search evaluations; set-up of the Schur complement (first solve only).
+      double time_contact_rows = 0, time_factorization = 0, time_solves = 0, time_residuals = 0,
+             time_cholesky = 0, time_form_W = 0;
+    };
+
+    /**
+     * The nonlinear iteration of the contact problem (paper Section 5.1): at each iterate the
+     * contact method gives the face rows, the linear solver the Newton step on (u, lambda),
+     * and the globalization of the deck (all off by default: the paper's plain method) chooses
+     * the step length:
+     * - a backtracking (Armijo) line search on the merit max(|C| / |lambda|, |r_mech| / |f|) of
+     *   (25)-(26), optionally non-monotone, from the start or once the residual stagnates;
+     * - damping of steps that revisit the face states of an earlier, non-consecutive iterate;
+     * - continuation in c (the complementarity functions have the same zeros for every c > 0).
+     * Stops when the relative residual is below the tolerance at the target c.
+     */
+    template <int dim>
+    class ContactSolver
+    {
+    public:
+      ContactSolver(const ElasticitySystem<dim> &system,
+                    const FrictionField<dim>    &friction,
+                    const ContactParameters     &parameters,
+                    ConditionalOStream          &progress,
+                    TimerOutput                 &timer);
+
+      /**
+       * Iterates from (u, lambda), or from the deck's initial guess when @p cold_start, until
+       * convergence; leaves the last iterate in (u, lambda). Throws SolverFailure after
+       * max_iterations. At least one iteration is always done, so that small load changes
+       * (finite differences of a coupled map) are resolved exactly; with an unchanged active
+       * set it costs one solve with the stored factorization.
+       */
+      const ContactStatistics &
+      solve(Vector<double> &u, Vector<double> &lambda, const bool cold_start);
+
+      /// Forgets what depends on face rows (the next solve refactorizes); keeps what depends
+      /// on the mesh only (K, its Cholesky factors, W).
+      void
+      reset();
+      /// Forgets the linear solver altogether (after the system was set up again).
+      void
+      clear();
+
+      /// Face state of face @p f at (u, lambda) with the target c.
+      FaceState
+      state(const Vector<double> &u, const Vector<double> &lambda, const unsigned int f) const;
+      /// Current friction coefficient of face @p f at (u, lambda).
+      double
+      friction(const Vector<double> &u, const unsigned int f) const;
+
+      /// Statistics of the last solve (also after a SolverFailure).
+      const ContactStatistics &
+      statistics() const
+      {
+        return stats;
+      }
+
+      /// Name of the linear solver in use ("" before the first solve).
+      std::string
+      linear_solver_name() const;
+      /// Statistics of the linear solver over all solves (null before the first solve).
+      const ContactLinearSolverStatistics *
+      linear_solver_statistics() const;
+
+    private:
+      /// Squared, |sigma|-weighted norms at (u, lambda) with parameter c: scaled complementarity
+      /// residual (25)-(26), multipliers, c [u]; mechanical residual and load.
+      struct ResidualParts
+      {
+        double contact = 0, lambda = 0, c_jump = 0, mechanical = 0, load = 0;
+        /// |sigma|-weighted squared norm of the unscaled (25)-(26) (C_tau in Pa^2).
+        double contact_unscaled = 0;
+      };
+      ResidualParts
+      residual_parts(const Vector<double> &u, const Vector<double> &lambda, const double c) const;
+      /// Line-search merit: relative contact and mechanical residuals, multiplier scale given.
+      static double
+      merit(const ResidualParts &r, const double scale2);
+      /// max(|C| / |lambda|, |f - K u - B^T lambda| / |f|) at the target c; |c [u]| scales C
+      /// when lambda = 0.
+      double
+      relative_residual(const Vector<double> &u, const Vector<double> &lambda) const;
+      /// Multiplier and jump of face @p f at (u, lambda), in the face's local frame.
+      std::pair<Tensor<1, dim>, Tensor<1, dim>>
+      local_values(const Vector<double> &u,
+                   const Vector<double> &lambda,
+                   const unsigned int    f) const;
+      /// The local law of face @p f at multiplier and jump @p lambda, @p jump (local frame).
+      LocalContactLaw<dim>
+      local_law(const unsigned int f, const Tensor<1, dim> &jump, const double c) const;
+
+      void
+      set_initial_guess(Vector<double> &u, Vector<double> &lambda) const;
+      /// Right-hand side (mechanical residual, face residuals) and face rows at (u, lambda).
+      void
+      linearize(const Vector<double>   &u,
+                const Vector<double>   &lambda,
+                const double            c,
+                FaceRows<dim>          &rows,
+                Vector<double>         &rhs,
+                std::vector<FaceState> &states) const;
+      /// The step factor of the cycling safeguard for face states @p states.
+      double
+      cycle_damping_factor(const std::vector<FaceState> &states, const unsigned int iteration);
+      /// Chooses the step length along @p delta from (u_old, lambda_old) and sets (u, lambda).
+      double
+      take_step(const Vector<double> &u_old,
+                const Vector<double> &lambda_old,
+                const Vector<double> &delta,
+                const double          alpha_max,
+                const double          c,
+                Vector<double>       &u,
+                Vector<double>       &lambda);
+
+      const ElasticitySystem<dim> &system;
+      const FrictionField<dim>    &friction_field;
+      const ContactParameters     &prm;
+      ConditionalOStream          &progress;
+      TimerOutput                 &timer;
+
+      std::unique_ptr<ContactMethod<dim>>       method;
+      std::string                               method_name;
+      std::unique_ptr<ContactLinearSolver<dim>> linear_solver;
+
+      /// State of the current solve: its statistics, the face states of every iterate (for
+      /// the cycling safeguard) and whether the line search has been switched on.
+      ContactStatistics                   stats;
+      std::vector<std::vector<FaceState>> seen_states;
+      bool                                line_search_on = false;
+    };
+  } // namespace mechanics
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/timer.h>
+
+#include <porofrac/app/postprocess/postprocessor.h>
+#include <porofrac/base/exceptions.h>
+#include <porofrac/base/sparse_lu.h>
+#include <porofrac/mechanics/sparse_cholesky.h>
+
+namespace porofrac
+{
+  namespace app
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /**
+       * The cost of one linear elasticity solve (every fracture open, lambda = 0) on the
+       * scene's mesh, to compare with the contact solve (deck entry Mechanics/Report linear
+       * solve time): with the UMFPACK LU of the full system, and with the sparse Cholesky
+       * factorization of K that the Schur complement solver uses (factorization + solve).
+       */
+      template <int dim>
+      class LinearSolveTime : public Postprocessor<dim>
+      {
+      public:
+        void
+        execute(SceneView<dim> &scene, io::RunContext &context) override
+        {
+          const auto  &system        = scene.mechanics->get_system();
+          const double contact_time  = context.summary["contact_solve_time_s"].as_number();
+          const double lu_time       = time_full_system(system);
+          io::Json    &m             = context.summary["mechanics"];
+          m["linear_solve_time_s"]   = lu_time;
+          m["contact_linear_ratio"]  = contact_time / lu_time;
+          context.progress << "    one linear elasticity solve (UMFPACK): " << lu_time << " s"
+                           << std::endl;
+          try
+            {
+              const double cholesky_time = time_cholesky(system);
+              context.progress << "    one linear elasticity solve (Cholesky): " << cholesky_time
+                               << " s" << std::endl;
+              m["linear_solve_time_cholesky_s"]  = cholesky_time;
+              m["contact_linear_ratio_cholesky"] = contact_time / cholesky_time;
+            }
+          catch (const SolverFailure &)
+            {}
+        }
+
+      private:
+        /// The right-hand side f on unconstrained dofs.
+        static Vector<double>
+        load(const mechanics::ElasticitySystem<dim> &system, const unsigned int size)
+        {
+          Vector<double> b(size);
+          for (unsigned int i = 0; i < system.n_displacement_dofs(); ++i)
+            b(i) = system.get_homogeneous_constraints().is_constrained(i) ? 0. : system.load()(i);
+          return b;
+        }
+
+        static double
+        time_full_system(const mechanics::ElasticitySystem<dim> &system)
+        {
+          // The multiplier rows read lambda = 0.
+          Timer                clock;
+          SparseMatrix<double> A(system.get_sparsity_pattern());
+          A.copy_from(system.get_constrained_matrix());
+          for (unsigned int i = system.n_displacement_dofs(); i < system.n_dofs(); ++i)
+            A.set(i, i, 1.);
+          const Vector<double> rhs = load(system, system.n_dofs());
+          Vector<double>       x(system.n_dofs());
+          clock.restart();
+          SparseLU direct;
+          direct.factorize(A);
+          direct.vmult(x, rhs);
+          return clock.wall_time();
+        }
+
+        static double
+        time_cholesky(const mechanics::ElasticitySystem<dim> &system)
+        {
+          Vector<double> x = load(system, system.n_displacement_dofs());
+          Timer          clock;
+          mechanics::SparseCholesky cholesky;
+          cholesky.factorize(system.get_constrained_matrix(), system.n_displacement_dofs());
+          cholesky.solve(x);
+          return clock.wall_time();
+        }
+      };
+
+      template <int dim>
+      std::unique_ptr<Postprocessor<dim>>
+      make(const PhysicsParameters &p)
+      {
+        if (!p.mechanics.reports.linear_solve_time)
+          return nullptr;
+        return std::make_unique<LinearSolveTime<dim>>();
+      }
+
+      const std::string description = "the time of one linear elasticity solve on the mesh";
+    } // namespace
+
+    POROFRAC_REGISTER(PostprocessorRegistry<2>, "linear solve time", description, make<2>)
+    POROFRAC_REGISTER(PostprocessorRegistry<3>, "linear solve time", description, make<3>)
+  } // namespace app
+} // namespace porofrac

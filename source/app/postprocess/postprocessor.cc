@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/app/postprocess/postprocessor.h>
+
+#include <algorithm>
+
+namespace porofrac
+{
+  namespace app
+  {
+    using namespace dealii;
+
+    template <int dim>
+    void
+    run_postprocessors(SceneView<dim> &scene, io::RunContext &context)
+    {
+      auto entries = PostprocessorRegistry<dim>::instance().entries();
+      std::sort(entries.begin(), entries.end(), [](const auto &a, const auto &b) {
+        return a.name < b.name;
+      });
+      std::vector<std::unique_ptr<Postprocessor<dim>>> active;
+      for (const auto &e : entries)
+        if (auto p = e.create(scene.parameters))
+          active.push_back(std::move(p));
+      std::stable_partition(active.begin(), active.end(), [](const auto &p) {
+        return !p->changes_state();
+      });
+      for (const auto &p : active)
+        p->execute(scene, context);
+    }
+
+    template void
+    run_postprocessors(SceneView<2> &, io::RunContext &);
+    template void
+    run_postprocessors(SceneView<3> &, io::RunContext &);
+  } // namespace app
+} // namespace porofrac

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/base/exceptions.h>
+#include <porofrac/io/pvd_writer.h>
+
+#include <fstream>
+
+namespace porofrac
+{
+  namespace io
+  {
+    PvdWriter::PvdWriter(const std::string &filename)
+      : filename(filename)
+    {}
+
+
+
+    void
+    PvdWriter::add(const double time, const std::string &file)
+    {
+      entries.emplace_back(time, file);
+      std::ofstream pvd(filename);
+      pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+             "<Collection>\n";
+      for (const auto &e : entries)
+        pvd << "<DataSet timestep=\"" << e.first << "\" file=\"" << e.second << "\"/>\n";
+      pvd << "</Collection>\n</VTKFile>\n";
+      if (!pvd)
+        throw InputError("Output/Directory", "cannot write " + filename);
+    }
+  } // namespace io
+} // namespace porofrac

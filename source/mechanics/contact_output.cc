@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/numerics/data_out.h>
+
+#include <porofrac/mechanics/contact_output.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    const char *
+    state_name(const FaceState s)
+    {
+      return s == FaceState::open ? "open" : (s == FaceState::stick ? "stick" : "slip");
+    }
+
+
+
+    template <int dim>
+    ContactFaceValues<dim>
+    contact_face_values(const ContactProblem<dim> &problem, const unsigned int f)
+    {
+      const Tensor<2, dim> R = problem.frame(f);
+      return {R * problem.jump(f), R * problem.multiplier(f), problem.state(f), problem.friction(f)};
+    }
+
+
+
+    template <int dim>
+    void
+    append_contact_fields(const ContactProblem<dim> &problem, geometry::FractureFields &fields)
+    {
+      std::vector<std::string> names = {"jump_n", "jump_t", "lambda_n", "lambda_t"};
+      if (dim == 3)
+        names.insert(names.end(), {"jump_t1", "jump_t2", "lambda_t1", "lambda_t2"});
+      names.insert(names.end(), {"state", "friction"});
+      const unsigned int first = fields.size();
+      for (const std::string &name : names)
+        fields.emplace_back(name, std::vector<double>());
+      for (const auto &face : problem.get_mesh().fracture_faces)
+        {
+          using V                        = ContactFaceValues<dim>;
+          const V             v          = contact_face_values(problem, face.index);
+          std::vector<double> row        = {v.jump[0],
+                                            V::tangential(v.jump),
+                                            v.lambda[0],
+                                            V::tangential(v.lambda)};
+          if (dim == 3)
+            row.insert(row.end(), {v.jump[1], v.jump[dim - 1], v.lambda[1], v.lambda[dim - 1]});
+          row.insert(row.end(), {static_cast<double>(v.state), v.friction});
+          for (unsigned int k = 0; k < row.size(); ++k)
+            fields[first + k].second.push_back(row[k]);
+        }
+    }
+
+
+
+    void
+    write_fracture_table_header(std::ostream &out, const unsigned int dim, const bool with_time)
+    {
+      out << "fracture_id,face_id,s,x,y," << (dim == 3 ? "z," : "") << "jump_n,jump_t,"
+          << (dim == 3 ? "jump_t1,jump_t2," : "") << "lambda_n,lambda_t,"
+          << (dim == 3 ? "lambda_t1,lambda_t2," : "") << "state,aperture"
+          << (with_time ? ",time" : "") << '\n';
+    }
+
+
+
+    template <int dim>
+    void
+    write_fracture_table_rows(std::ostream              &out,
+                              const ContactProblem<dim> &problem,
+                              const std::vector<double> *aperture,
+                              const double              *time)
+    {
+      using V              = ContactFaceValues<dim>;
+      const auto precision = out.precision(10);
+      for (const auto &face : problem.get_mesh().fracture_faces)
+        {
+          const V v = contact_face_values(problem, face.index);
+          out << face.fracture_id << ',' << face.index << ',' << face.abscissa << ','
+              << face.centre[0] << ',' << face.centre[1] << ',';
+          if (dim == 3)
+            out << face.centre[dim - 1] << ',';
+          out << v.jump[0] << ',' << V::tangential(v.jump) << ',';
+          if (dim == 3)
+            out << v.jump[1] << ',' << v.jump[dim - 1] << ',';
+          out << v.lambda[0] << ',' << V::tangential(v.lambda) << ',';
+          if (dim == 3)
+            out << v.lambda[1] << ',' << v.lambda[dim - 1] << ',';
+          out << state_name(v.state) << ','
+              << (aperture ? (*aperture)[face.index] : std::max(0., -v.jump[0]));
+          if (time)
+            out << ',' << *time;
+          out << '\n';
+        }
+      out.precision(precision);
+    }
+
+    template <int dim>
+    void
+    write_displacement(const ContactProblem<dim> &problem,
+                       const std::string         &filename,
+                       const std::string         &format)
+    {
+      DataOut<dim> data_out;
+      data_out.attach_dof_handler(problem.get_dof_handler());
+      std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation(
+        dim, DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(problem.displacement(),
+                               std::vector<std::string>(dim, "displacement"),
+                               DataOut<dim>::type_dof_data,
+                               interpretation);
+      data_out.build_patches(problem.get_mesh().mapping(), 2);
+      geometry::write_data_out(data_out, filename, format);
+    }
+
+#define POROFRAC_INSTANTIATE_FRACTURE_FIELDS(dim)                                           \
+  template ContactFaceValues<dim> contact_face_values(const ContactProblem<dim> &,          \
+                                                      const unsigned int);                  \
+  template void                   append_contact_fields(const ContactProblem<dim> &,        \
+                                                        geometry::FractureFields &);        \
+  template void                   write_fracture_table_rows(std::ostream &,                 \
+                                                            const ContactProblem<dim> &,    \
+                                                            const std::vector<double> *,    \
+                                                            const double *);            \
+  template void write_displacement(const ContactProblem<dim> &,                            \
+                                   const std::string &,                                    \
+                                   const std::string &);
+    POROFRAC_INSTANTIATE_FRACTURE_FIELDS(2)
+    POROFRAC_INSTANTIATE_FRACTURE_FIELDS(3)
+#undef POROFRAC_INSTANTIATE_FRACTURE_FIELDS
+  } // namespace mechanics
+} // namespace porofrac

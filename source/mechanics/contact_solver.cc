@@ -1,0 +1,424 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/timer.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/mechanics/contact_solver.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    template <int dim>
+    ContactSolver<dim>::ContactSolver(const ElasticitySystem<dim> &system,
+                                      const FrictionField<dim>    &friction,
+                                      const ContactParameters     &parameters,
+                                      ConditionalOStream          &progress,
+                                      TimerOutput                 &timer)
+        : system(system)
+        , friction_field(friction)
+        , prm(parameters)
+        , progress(progress)
+        , timer(timer)
+    {
+    }
+
+
+
+    template <int dim>
+    void
+    ContactSolver<dim>::reset()
+    {
+      if (linear_solver)
+        linear_solver->reset();
+    }
+
+
+
+    template <int dim>
+    void
+    ContactSolver<dim>::clear()
+    {
+      linear_solver.reset();
+    }
+
+
+
+    template <int dim>
+    std::string
+    ContactSolver<dim>::linear_solver_name() const
+    {
+      return linear_solver ? linear_solver->name() : std::string();
+    }
+
+
+
+    template <int dim>
+    const ContactLinearSolverStatistics *
+    ContactSolver<dim>::linear_solver_statistics() const
+    {
+      return linear_solver ? &linear_solver->statistics() : nullptr;
+    }
+
+
+
+    template <int dim>
+    LocalContactLaw<dim>
+    ContactSolver<dim>::local_law(const unsigned int    f,
+                                  const Tensor<1, dim> &jump,
+                                  const double          c) const
+    {
+      return {friction_field.coefficient(f, LocalContactLaw<dim>::tangential(jump).norm()), c};
+    }
+
+
+
+    template <int dim>
+    std::pair<Tensor<1, dim>, Tensor<1, dim>>
+    ContactSolver<dim>::local_values(const Vector<double> &u,
+                                     const Vector<double> &lambda,
+                                     const unsigned int    f) const
+    {
+      const Tensor<2, dim> R = system.frame(f);
+      Tensor<1, dim>       l;
+      for (unsigned int d = 0; d < dim; ++d)
+        l[d] = lambda(dim * f + d);
+      return {R * l, R * system.jump(u, f)};
+    }
+
+
+
+    template <int dim>
+    double
+    ContactSolver<dim>::friction(const Vector<double> &u, const unsigned int f) const
+    {
+      return local_law(f, system.frame(f) * system.jump(u, f), prm.c).F;
+    }
+
+
+
+    template <int dim>
+    FaceState
+    ContactSolver<dim>::state(const Vector<double> &u,
+                              const Vector<double> &lambda,
+                              const unsigned int    f) const
+    {
+      const auto [l, j] = local_values(u, lambda, f);
+      return local_law(f, j, prm.c).state(l, j);
+    }
+
+
+
+    template <int dim>
+    typename ContactSolver<dim>::ResidualParts
+    ContactSolver<dim>::residual_parts(const Vector<double> &u,
+                                       const Vector<double> &lambda,
+                                       const double          c) const
+    {
+      ResidualParts parts;
+      // Mechanical rows: f - K u - B^T lambda on unconstrained dofs.
+      Vector<double> r;
+      system.apply_elasticity(u, r);
+      r.sadd(-1., system.load());
+      const auto &coupling = system.get_coupling();
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        for (const auto &e : coupling[fi])
+          r(e.dof) -= e.value * lambda(dim * fi + e.component);
+      const auto &f = system.load();
+      for (unsigned int i = 0; i < r.size(); ++i)
+        if (!system.get_constraints().is_constrained(i))
+          {
+            parts.mechanical += r(i) * r(i);
+            parts.load += f(i) * f(i);
+          }
+      // Contact rows, (25)-(26) scaled to stress units, weighted by |sigma|.
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        {
+          const auto [l, j]              = local_values(u, lambda, fi);
+          const LocalContactLaw<dim> law = local_law(fi, j, c);
+          const double               w   = system.face_measure(fi);
+          parts.contact += w * law.residual(l, j, true).norm_square();
+          parts.contact_unscaled += w * law.residual(l, j, false).norm_square();
+          parts.lambda += w * l.norm_square();
+          parts.c_jump += w * (c * j).norm_square();
+        }
+      return parts;
+    }
+
+
+
+    template <int dim>
+    double
+    ContactSolver<dim>::merit(const ResidualParts &r, const double scale2)
+    {
+      const double rel_c = (scale2 > 0 ? std::sqrt(r.contact / scale2) : std::sqrt(r.contact));
+      const double rel_m = (r.load > 0 ? std::sqrt(r.mechanical / r.load) : 0.);
+      return std::max(rel_c, rel_m);
+    }
+
+
+
+    template <int dim>
+    double
+    ContactSolver<dim>::relative_residual(const Vector<double> &u,
+                                          const Vector<double> &lambda) const
+    {
+      const ResidualParts r = residual_parts(u, lambda, prm.c);
+      return merit(r, r.lambda > 0 ? r.lambda : r.c_jump);
+    }
+
+
+
+    template <int dim>
+    void
+    ContactSolver<dim>::set_initial_guess(Vector<double> &u, Vector<double> &lambda) const
+    {
+      // u = 0 with the Dirichlet values; open: lambda = 0, stick: lambda_n = given.
+      system.initial_displacement(u);
+      lambda.reinit(dim * system.get_mesh().fracture_faces.size());
+      if (prm.stick_guess)
+        for (const auto &face : system.get_mesh().fracture_faces)
+          for (unsigned int d = 0; d < dim; ++d)
+            lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
+    }
+
+
+
+    template <int dim>
+    void
+    ContactSolver<dim>::linearize(const Vector<double>   &u,
+                                  const Vector<double>   &lambda,
+                                  const double            c,
+                                  FaceRows<dim>          &rows,
+                                  Vector<double>         &rhs,
+                                  std::vector<FaceState> &states) const
+    {
+      const unsigned int n_u         = system.n_displacement_dofs();
+      const auto        &coupling    = system.get_coupling();
+      const auto        &constraints = system.get_homogeneous_constraints();
+      const auto        &f           = system.load();
+      rhs                            = 0;
+      // Mechanical residual f - K u - B^T lambda.
+      Vector<double> r;
+      system.apply_elasticity(u, r);
+      for (unsigned int i = 0; i < n_u; ++i)
+        rhs(i) = constraints.is_constrained(i) ? 0. : f(i) - r(i);
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        for (const auto &e : coupling[fi])
+          if (!constraints.is_constrained(e.dof))
+            rhs(e.dof) -= e.value * lambda(dim * fi + e.component);
+      // Face rows A_l R lambda + A_j R [u] = r of the contact method, for the increment.
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        {
+          const Tensor<2, dim> R = system.frame(fi);
+          const auto [l, j]      = local_values(u, lambda, fi);
+          LocalRows<dim> lr;
+          states[fi]              = method->rows(local_law(fi, j, c), l, j, lr);
+          const Tensor<1, dim> rs = lr.rhs - lr.A_lambda * l - lr.A_jump * j;
+          rows.lambda[fi]         = lr.A_lambda * R;
+          rows.jump[fi]           = lr.A_jump * R;
+          for (unsigned int i = 0; i < dim; ++i)
+            rhs(n_u + dim * fi + i) = rs[i];
+        }
+    }
+
+
+
+    template <int dim>
+    double
+    ContactSolver<dim>::cycle_damping_factor(const std::vector<FaceState> &states,
+                                             const unsigned int            iteration)
+    {
+      // States equal to those of an earlier iterate other than the previous one mean that the
+      // iteration revisits a set: damp the step.
+      if (prm.cycle_damping > 0)
+        for (unsigned int k = 0; k + 1 < seen_states.size(); ++k)
+          if (seen_states[k] == states && seen_states.back() != states)
+            {
+              ++stats.cycles_detected;
+              progress << "    contact iteration " << iteration
+                       << ": face states repeat those of iteration " << k + 1 << "; step damped by "
+                       << prm.cycle_damping << std::endl;
+              return prm.cycle_damping;
+            }
+      return 1.;
+    }
+
+
+
+    template <int dim>
+    double
+    ContactSolver<dim>::take_step(const Vector<double> &u_old,
+                                  const Vector<double> &lambda_old,
+                                  const Vector<double> &delta,
+                                  const double          alpha_max,
+                                  const double          c,
+                                  Vector<double>       &u,
+                                  Vector<double>       &lambda)
+    {
+      const unsigned int n_u      = u.size();
+      const auto         set_step = [&](const double alpha) {
+        for (unsigned int i = 0; i < n_u; ++i)
+          u(i) = u_old(i) + alpha * delta(i);
+        for (unsigned int i = 0; i < lambda.size(); ++i)
+          lambda(i) = lambda_old(i) + alpha * delta(n_u + i);
+      };
+      double alpha = alpha_max;
+      set_step(alpha);
+      // The line search runs from the start, or (trigger on stagnation) from the first iterate
+      // whose relative residual did not decrease.
+      const auto        &history = stats.residual_history;
+      const unsigned int nr      = history.size();
+      if (prm.line_search && !line_search_on &&
+          (!prm.line_search_on_stagnation || (nr > 1 && history[nr - 1] >= history[nr - 2])))
+        line_search_on = true;
+      if (!line_search_on)
+        return alpha;
+      // Backtracking (Armijo) on the merit max(|C|/S, |r_mech|/|f|) of (25)-(26) with one
+      // multiplier scale S for all trial steps (the larger of the current and the full-step
+      // multipliers).
+      const ResidualParts trial   = residual_parts(u, lambda, c);
+      const ResidualParts current = residual_parts(u_old, lambda_old, c);
+      double              scale2  = std::max(trial.lambda, current.lambda);
+      if (scale2 <= 0)
+        scale2 = std::max(trial.c_jump, current.c_jump);
+      // Non-monotone reference (Grippo-Lampariello-Lucidi): the largest of the current merit
+      // and the relative residuals of the last `memory - 1` iterates.
+      double phi0 = merit(current, scale2);
+      for (unsigned int k = 1; k < prm.line_search_memory && k < history.size(); ++k)
+        phi0 = std::max(phi0, history[history.size() - 1 - k]);
+      double       phi  = merit(trial, scale2);
+      double       best = phi, best_alpha = alpha;
+      unsigned int halvings = 0;
+      while (phi > (1 - 1e-4 * alpha) * phi0 && halvings < prm.line_search_halvings)
+        {
+          alpha /= 2;
+          ++halvings;
+          ++stats.backtracks;
+          set_step(alpha);
+          phi = merit(residual_parts(u, lambda, c), scale2);
+          if (phi < best)
+            {
+              best       = phi;
+              best_alpha = alpha;
+            }
+        }
+      // No sufficient decrease: keep the best step tried.
+      if (phi > (1 - 1e-4 * alpha) * phi0 && best_alpha != alpha)
+        {
+          alpha = best_alpha;
+          set_step(alpha);
+        }
+      return alpha;
+    }
+
+
+
+    template <int dim>
+    const ContactStatistics &
+    ContactSolver<dim>::solve(Vector<double> &u, Vector<double> &lambda, const bool cold_start)
+    {
+      const unsigned int n_u = system.n_displacement_dofs();
+      const unsigned int n_f = system.get_coupling().size();
+      stats                  = ContactStatistics();
+      seen_states.clear();
+      line_search_on = false;
+      if (!method || method_name != prm.method)
+        {
+          method = ContactMethodRegistry<dim>::instance().create(prm.method, "Mechanics/Solver");
+          method_name = prm.method;
+        }
+      if (!linear_solver)
+        {
+          linear_solver = ContactLinearSolverRegistry<dim>::instance().create(
+            prm.linear_solver, "Mechanics/Linear solver", system, prm, progress, timer);
+          stats.time_cholesky = linear_solver->statistics().time_cholesky;
+          stats.time_form_W   = linear_solver->statistics().time_form_W;
+        }
+      const ContactLinearSolverStatistics start = linear_solver->statistics();
+      if (cold_start)
+        set_initial_guess(u, lambda);
+      const ResidualParts g0       = residual_parts(u, lambda, prm.c);
+      const double        g0_norm2 = g0.mechanical + g0.contact_unscaled;
+      // Continuation in c: the complementarity functions (25)-(26) have the same zeros for
+      // every c > 0, so c may move from c_start to the target during the iterations.
+      double         c_now = (prm.c_start > 0 ? prm.c_start : prm.c);
+      Vector<double> rhs(system.n_dofs()), delta(system.n_dofs()), u_old(n_u),
+        lambda_old(lambda.size());
+      FaceRows<dim> rows;
+      rows.lambda.resize(n_f);
+      rows.jump.resize(n_f);
+      Timer clock;
+      for (stats.iterations = 1; stats.iterations <= prm.max_iterations; ++stats.iterations)
+        {
+          std::vector<FaceState> states(n_f);
+          {
+            TimerOutput::Scope t(timer, "Mechanics: contact update");
+            clock.restart();
+            linearize(u, lambda, c_now, rows, rhs, states);
+            stats.time_contact_rows += clock.wall_time();
+          }
+          {
+            TimerOutput::Scope t(timer, "Mechanics: factorization and solve");
+            unsigned int       changed = 0;
+            if (!seen_states.empty())
+              for (unsigned int fi = 0; fi < n_f; ++fi)
+                changed += (seen_states.back()[fi] != states[fi]);
+            linear_solver->solve(rows, changed, rhs, delta);
+          }
+          const double alpha_max = cycle_damping_factor(states, stats.iterations);
+          seen_states.push_back(states);
+
+          TimerOutput::Scope t(timer, "Mechanics: contact update");
+          clock.restart();
+          u_old              = u;
+          lambda_old         = lambda;
+          const double alpha = take_step(u_old, lambda_old, delta, alpha_max, c_now, u, lambda);
+          stats.step_history.push_back(alpha);
+          const double res = relative_residual(u, lambda);
+          stats.time_residuals += clock.wall_time();
+          stats.residual_history.push_back(res);
+          {
+            const ResidualParts g = residual_parts(u, lambda, prm.c);
+            stats.initial_relative_history.push_back(
+              g0_norm2 > 0 ? std::sqrt((g.mechanical + g.contact_unscaled) / g0_norm2) : 0.);
+          }
+          progress << "    contact iteration " << stats.iterations << ": relative residual "
+                   << std::scientific << std::setprecision(3) << res << std::defaultfloat;
+          if (alpha != 1)
+            progress << ", step " << alpha;
+          if (c_now != prm.c)
+            progress << ", c = " << c_now;
+          progress << std::endl;
+          const ContactLinearSolverStatistics &now = linear_solver->statistics();
+          stats.factorizations                     = now.factorizations - start.factorizations;
+          stats.reused_factorizations = now.reused_factorizations - start.reused_factorizations;
+          stats.time_factorization    = now.time_factorization - start.time_factorization;
+          stats.time_solves           = now.time_solves - start.time_solves;
+          if (res <= prm.tolerance && c_now == prm.c)
+            {
+              stats.converged = true;
+              return stats;
+            }
+          // Continuation: move c towards the target once the face states are those of the
+          // previous iterate (the active set has settled for this c).
+          if (c_now != prm.c && seen_states.size() > 1 &&
+              seen_states[seen_states.size() - 2] == states)
+            c_now = (c_now < prm.c ? std::min(prm.c, c_now * prm.continuation_factor) :
+                                     std::max(prm.c, c_now / prm.continuation_factor));
+        }
+      stats.iterations = prm.max_iterations;
+      std::ostringstream s;
+      s << "contact solver (" << prm.method << ") did not converge in " << prm.max_iterations
+        << " iterations; last relative residual " << std::scientific << std::setprecision(3)
+        << stats.residual_history.back();
+      throw SolverFailure(s.str());
+    }
+
+    template class ContactSolver<2>;
+    template class ContactSolver<3>;
+  } // namespace mechanics
+} // namespace porofrac
