@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
@@ -56,11 +57,11 @@ namespace porofrac
     ElasticitySystem<dim>::ElasticitySystem(const geometry::CutMesh<dim> &mesh,
                                             const ContactParameters      &parameters,
                                             TimerOutput                  &timer)
-      : mesh(mesh)
-      , prm(parameters)
-      , timer(timer)
-      , fe(FE_SimplexP<dim>(2), dim)
-      , dof_handler(mesh.triangulation)
+        : mesh(mesh)
+        , prm(parameters)
+        , timer(timer)
+        , fe(FE_SimplexP<dim>(2), dim)
+        , dof_handler(mesh.triangulation)
     {
       prm.validate(dim);
       if (prm.axisymmetric)
@@ -252,50 +253,182 @@ namespace porofrac
 
 
 
-    namespace
+    /// The fixed loads of the deck as functions (body force, tractions, pressures, pre-stress).
+    template <int dim>
+    struct DeckLoads
     {
-      /// The fixed loads of the deck as functions (body force, tractions, pressures, pre-stress).
-      template <int dim>
-      struct DeckLoads
+      DeckLoads(const ContactParameters &prm, const geometry::CutMesh<dim> &mesh)
       {
-        DeckLoads(const ContactParameters &prm, const geometry::CutMesh<dim> &mesh)
+        if (!prm.body_force.empty())
+          {
+            std::map<unsigned int, std::string> m;
+            for (unsigned int d = 0; d < dim; ++d)
+              m[d] = prm.body_force[d];
+            body = make_vector_function<dim>(m, "Mechanics/Body force");
+          }
+        if (!prm.pre_stress.empty())
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              sigma0[i][j] = prm.pre_stress[i * dim + j];
+        const auto check_id = [&](const types::boundary_id id, const std::string &parameter) {
+          check_input(std::find(mesh.outer_boundary_ids.begin(),
+                                mesh.outer_boundary_ids.end(),
+                                id) != mesh.outer_boundary_ids.end(),
+                      parameter,
+                      "boundary id " + std::to_string(id) +
+                        " is not an outer boundary of the mesh");
+        };
+        for (const auto &[id, m] : prm.traction)
+          {
+            check_id(id, "Mechanics/Traction");
+            traction[id] = make_vector_function<dim>(m, "Mechanics/Traction");
+          }
+        for (const auto &[id, e] : prm.pressure)
+          {
+            check_id(id, "Mechanics/Normal pressure");
+            pressure[id] = io::parse_expressions<dim>({e}, "Mechanics/Normal pressure");
+          }
+      }
+
+      std::unique_ptr<FunctionParser<dim>>                               body;
+      SymmetricTensor<2, dim>                                            sigma0;
+      std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>> traction, pressure;
+    };
+
+
+
+    /// Per-cell work arrays and the cell's contributions (matrix, loads, int_K div phi_i).
+    template <int dim>
+    struct ElasticitySystem<dim>::CellScratch
+    {
+      CellScratch(const geometry::CutMesh<dim> &mesh, const FESystem<dim> &fe)
+          : quadrature(3)
+          , face_quadrature(3)
+          , fe_values(mesh.mapping(),
+                      fe,
+                      quadrature,
+                      update_values | update_gradients | update_quadrature_points |
+                        update_JxW_values)
+          , fe_face(mesh.mapping(),
+                    fe,
+                    face_quadrature,
+                    update_values | update_quadrature_points | update_normal_vectors |
+                      update_JxW_values)
+          , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
+          , rhs(fe.n_dofs_per_cell())
+          , div_integral(fe.n_dofs_per_cell())
+          , local(fe.n_dofs_per_cell())
+          , eps(fe.n_dofs_per_cell())
+          , eps_hoop(fe.n_dofs_per_cell())
+          , div(fe.n_dofs_per_cell())
+          , value(dim)
+      {
+      }
+
+      const QGaussSimplex<dim>             quadrature;
+      const QGaussSimplex<dim - 1>         face_quadrature;
+      FEValues<dim>                        fe_values;
+      FEFaceValues<dim>                    fe_face;
+      FullMatrix<double>                   matrix;
+      Vector<double>                       rhs, div_integral;
+      std::vector<types::global_dof_index> local;
+      std::vector<SymmetricTensor<2, dim>> eps;
+      std::vector<double>                  eps_hoop, div;
+      Vector<double>                       value;
+    };
+
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::assemble_cell_volume(const active_cell_iterator &cell,
+                                                const DeckLoads<dim>       &loads,
+                                                CellScratch                &scratch)
+    {
+      // Hooke's law (plane strain in 2D).
+      const auto [mu, lam] = lame_coefficients(prm.young_modulus, prm.poisson_ratio);
+      const FEValuesExtractors::Vector disp(0);
+      const bool                       axi       = prm.axisymmetric;
+      const unsigned int               n         = fe.n_dofs_per_cell();
+      auto                            &fe_values = scratch.fe_values;
+      auto &eps = scratch.eps, &eps_hoop = scratch.eps_hoop, &div = scratch.div;
+      fe_values.reinit(cell);
+      for (unsigned int q = 0; q < scratch.quadrature.size(); ++q)
         {
-          if (!prm.body_force.empty())
+          const Point<dim> &x = fe_values.quadrature_point(q);
+          // Axisymmetric: integrals over the ring, weight 2 pi r; the strain gains the hoop
+          // component u_r / r (r = x[1], radial component 1).
+          const double JxW = measure_weight(axi, x) * fe_values.JxW(q);
+          cell_measures[cell->active_cell_index()] += JxW;
+          for (unsigned int i = 0; i < n; ++i)
             {
-              std::map<unsigned int, std::string> m;
-              for (unsigned int d = 0; d < dim; ++d)
-                m[d] = prm.body_force[d];
-              body = make_vector_function<dim>(m, "Mechanics/Body force");
+              eps[i]      = fe_values[disp].symmetric_gradient(i, q);
+              eps_hoop[i] = (axi && fe.system_to_component_index(i).first == 1) ?
+                              fe_values.shape_value(i, q) / x[1] :
+                              0.;
+              div[i]      = trace(eps[i]) + eps_hoop[i];
             }
-          if (!prm.pre_stress.empty())
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = i; j < dim; ++j)
-                sigma0[i][j] = prm.pre_stress[i * dim + j];
-          const auto check_id = [&](const types::boundary_id id, const std::string &parameter) {
-            check_input(std::find(mesh.outer_boundary_ids.begin(),
-                                  mesh.outer_boundary_ids.end(),
-                                  id) != mesh.outer_boundary_ids.end(),
-                        parameter,
-                        "boundary id " + std::to_string(id) +
-                          " is not an outer boundary of the mesh");
-          };
-          for (const auto &[id, m] : prm.traction)
+          if (loads.body)
+            loads.body->vector_value(x, scratch.value);
+          for (unsigned int i = 0; i < n; ++i)
             {
-              check_id(id, "Mechanics/Traction");
-              traction[id] = make_vector_function<dim>(m, "Mechanics/Traction");
-            }
-          for (const auto &[id, e] : prm.pressure)
-            {
-              check_id(id, "Mechanics/Normal pressure");
-              pressure[id] = io::parse_expressions<dim>({e}, "Mechanics/Normal pressure");
+              const SymmetricTensor<2, dim> s_i =
+                2 * mu * eps[i] + lam * div[i] * unit_symmetric_tensor<dim>();
+              const double s_i_hoop = 2 * mu * eps_hoop[i] + lam * div[i];
+              for (unsigned int j = 0; j < n; ++j)
+                scratch.matrix(i, j) += (s_i * eps[j] + s_i_hoop * eps_hoop[j]) * JxW;
+              double r = -(loads.sigma0 * eps[i]) - prm.pre_stress_hoop * eps_hoop[i];
+              if (loads.body)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  r += scratch.value[c] * fe_values.shape_value(i, q);
+                }
+              scratch.rhs(i) += r * JxW;
+              scratch.div_integral(i) += div[i] * JxW;
             }
         }
+    }
 
-        std::unique_ptr<FunctionParser<dim>>                                body;
-        SymmetricTensor<2, dim>                                             sigma0;
-        std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>> traction, pressure;
-      };
-    } // namespace
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::assemble_cell_boundary(const active_cell_iterator &cell,
+                                                  const DeckLoads<dim>       &loads,
+                                                  CellScratch                &scratch)
+    {
+      for (const unsigned int fn : cell->face_indices())
+        {
+          if (!cell->face(fn)->at_boundary())
+            continue;
+          const auto id = cell->face(fn)->boundary_id();
+          const auto tr = loads.traction.find(id);
+          const auto pr = loads.pressure.find(id);
+          if (tr == loads.traction.end() && pr == loads.pressure.end())
+            continue;
+          auto &fe_face = scratch.fe_face;
+          fe_face.reinit(cell, fn);
+          for (unsigned int q = 0; q < scratch.face_quadrature.size(); ++q)
+            {
+              const Point<dim> &x   = fe_face.quadrature_point(q);
+              const double      JxW = measure_weight(prm.axisymmetric, x) * fe_face.JxW(q);
+              Tensor<1, dim>    t;
+              if (tr != loads.traction.end())
+                {
+                  tr->second->vector_value(x, scratch.value);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    t[d] += scratch.value[d];
+                }
+              if (pr != loads.pressure.end())
+                t -= pr->second->value(x) * fe_face.normal_vector(q);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  scratch.rhs(i) += t[c] * fe_face.shape_value(i, q) * JxW;
+                }
+            }
+        }
+    }
 
 
 
@@ -303,119 +436,33 @@ namespace porofrac
     void
     ElasticitySystem<dim>::assemble()
     {
-      TimerOutput::Scope t(timer, "Mechanics: assembly");
-      // Hooke's law (plane strain in 2D).
-      const auto [mu, lam] = lame_coefficients(prm.young_modulus, prm.poisson_ratio);
-      DeckLoads<dim> loads(prm, mesh);
-
-      const QGaussSimplex<dim>         quadrature(3);
-      const QGaussSimplex<dim - 1>     face_quadrature(3);
-      FEValues<dim>                    fe_values(mesh.mapping(),
-                              fe,
-                              quadrature,
-                              update_values | update_gradients | update_quadrature_points |
-                                update_JxW_values);
-      FEFaceValues<dim>                fe_face(mesh.mapping(),
-                                fe,
-                                face_quadrature,
-                                update_values | update_quadrature_points | update_normal_vectors |
-                                  update_JxW_values);
-      const FEValuesExtractors::Vector disp(0);
-
-      const unsigned int                   n = fe.n_dofs_per_cell();
-      FullMatrix<double>                   cell_matrix(n, n);
-      Vector<double>                       cell_rhs(n);
-      std::vector<types::global_dof_index> local(n);
-      std::vector<SymmetricTensor<2, dim>> eps(n);
-      std::vector<double>                  eps_hoop(n), div(n);
-      Vector<double>                       value(dim);
-      Vector<double>                       cell_div(n);
-      const bool                           axi = prm.axisymmetric;
-      K_full                                   = 0;
-      base_matrix                              = 0;
-      f                                        = 0;
+      TimerOutput::Scope   t(timer, "Mechanics: assembly");
+      const DeckLoads<dim> loads(prm, mesh);
+      CellScratch          scratch(mesh, fe);
+      K_full      = 0;
+      base_matrix = 0;
+      f           = 0;
       divergence.assign(mesh.triangulation.n_active_cells(), {});
       cell_measures.assign(mesh.triangulation.n_active_cells(), 0.);
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
-          fe_values.reinit(cell);
-          cell_matrix = 0;
-          cell_rhs    = 0;
-          cell_div    = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          scratch.matrix       = 0;
+          scratch.rhs          = 0;
+          scratch.div_integral = 0;
+          assemble_cell_volume(cell, loads, scratch);
+          assemble_cell_boundary(cell, loads, scratch);
+          cell->get_dof_indices(scratch.local);
+          K_full.add(scratch.local, scratch.matrix);
+          for (unsigned int i = 0; i < scratch.local.size(); ++i)
             {
-              const Point<dim> &x = fe_values.quadrature_point(q);
-              // Axisymmetric: integrals over the ring, weight 2 pi r; the strain gains the hoop
-              // component u_r / r (r = x[1], radial component 1).
-              const double JxW = measure_weight(axi, x) * fe_values.JxW(q);
-              cell_measures[cell->active_cell_index()] += JxW;
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  eps[i]      = fe_values[disp].symmetric_gradient(i, q);
-                  eps_hoop[i] = (axi && fe.system_to_component_index(i).first == 1) ?
-                                  fe_values.shape_value(i, q) / x[1] :
-                                  0.;
-                  div[i]      = trace(eps[i]) + eps_hoop[i];
-                }
-              if (loads.body)
-                loads.body->vector_value(x, value);
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const SymmetricTensor<2, dim> s_i =
-                    2 * mu * eps[i] + lam * div[i] * unit_symmetric_tensor<dim>();
-                  const double s_i_hoop = 2 * mu * eps_hoop[i] + lam * div[i];
-                  for (unsigned int j = 0; j < n; ++j)
-                    cell_matrix(i, j) += (s_i * eps[j] + s_i_hoop * eps_hoop[j]) * JxW;
-                  double r = -(loads.sigma0 * eps[i]) - prm.pre_stress_hoop * eps_hoop[i];
-                  if (loads.body)
-                    {
-                      const unsigned int c = fe.system_to_component_index(i).first;
-                      r += value[c] * fe_values.shape_value(i, q);
-                    }
-                  cell_rhs(i) += r * JxW;
-                  cell_div(i) += div[i] * JxW;
-                }
+              f(scratch.local[i]) += scratch.rhs(i);
+              if (scratch.div_integral(i) != 0)
+                divergence[cell->active_cell_index()].emplace_back(scratch.local[i],
+                                                                   scratch.div_integral(i));
             }
-          for (const unsigned int fn : cell->face_indices())
-            if (cell->face(fn)->at_boundary())
-              {
-                const auto id = cell->face(fn)->boundary_id();
-                const bool tr = loads.traction.count(id) > 0, pr = loads.pressure.count(id) > 0;
-                if (!tr && !pr)
-                  continue;
-                fe_face.reinit(cell, fn);
-                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                  {
-                    const double JxW =
-                      measure_weight(axi, fe_face.quadrature_point(q)) * fe_face.JxW(q);
-                    Tensor<1, dim> t;
-                    if (tr)
-                      {
-                        loads.traction[id]->vector_value(fe_face.quadrature_point(q), value);
-                        for (unsigned int d = 0; d < dim; ++d)
-                          t[d] += value[d];
-                      }
-                    if (pr)
-                      t -= loads.pressure[id]->value(fe_face.quadrature_point(q)) *
-                           fe_face.normal_vector(q);
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        const unsigned int c = fe.system_to_component_index(i).first;
-                        cell_rhs(i) += t[c] * fe_face.shape_value(i, q) * JxW;
-                      }
-                  }
-              }
-          cell->get_dof_indices(local);
-          K_full.add(local, cell_matrix);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              f(local[i]) += cell_rhs(i);
-              if (cell_div(i) != 0)
-                divergence[cell->active_cell_index()].emplace_back(local[i], cell_div(i));
-            }
-          constraints_hom.distribute_local_to_global(cell_matrix, local, base_matrix);
+          constraints_hom.distribute_local_to_global(scratch.matrix, scratch.local, base_matrix);
         }
-      check_input(f.all_zero() || std::isfinite(f.l2_norm()),
+      check_input(std::isfinite(f.l2_norm()),
                   "Mechanics",
                   "the loads (body force, tractions, pressures, pre-stress) are not finite");
       f_fixed = f;
@@ -595,8 +642,9 @@ namespace porofrac
       fv.reinit(cell);
       std::vector<SymmetricTensor<2, dim>> eps(1);
       fv[FEValuesExtractors::Vector(0)].get_function_symmetric_gradients(u, eps);
-      const auto [mu, lam]      = lame_coefficients(prm.young_modulus, prm.poisson_ratio);
-      SymmetricTensor<2, dim> s = 2 * mu * eps[0] + lam * trace(eps[0]) * unit_symmetric_tensor<dim>();
+      const auto [mu, lam] = lame_coefficients(prm.young_modulus, prm.poisson_ratio);
+      SymmetricTensor<2, dim> s =
+        2 * mu * eps[0] + lam * trace(eps[0]) * unit_symmetric_tensor<dim>();
       if (!prm.pre_stress.empty())
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = i; j < dim; ++j)

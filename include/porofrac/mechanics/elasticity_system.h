@@ -5,6 +5,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
+
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -32,6 +33,9 @@ namespace porofrac
       std::vector<Tensor<2, dim>> lambda;
       std::vector<Tensor<2, dim>> jump;
     };
+
+    template <int dim>
+    struct DeckLoads;
 
     /**
      * The linear part of the contact problem of paper eqs. (10)-(11b) on a cut mesh: P2
@@ -161,9 +165,7 @@ namespace porofrac
       /// displacement rows (constrained rows as in the Jacobian), A_l R x_lambda + A_j R [x_u]
       /// on the face rows.
       void
-      apply_jacobian(const FaceRows<dim>  &rows,
-                     const Vector<double> &x,
-                     Vector<double>       &y) const;
+      apply_jacobian(const FaceRows<dim> &rows, const Vector<double> &x, Vector<double> &y) const;
       /// Face-mean jump [u]_sigma of eq. (10), global frame.
       Tensor<1, dim>
       jump(const Vector<double> &u, const unsigned int f) const;
@@ -188,8 +190,20 @@ namespace porofrac
       make_constraints();
       void
       make_coupling(DynamicSparsityPattern &dsp);
+      using active_cell_iterator = typename DoFHandler<dim>::active_cell_iterator;
+      struct CellScratch;
       void
       assemble();
+      /// Elasticity matrix, body force, pre-stress and int_K div phi_i of one cell.
+      void
+      assemble_cell_volume(const active_cell_iterator &cell,
+                           const DeckLoads<dim>       &loads,
+                           CellScratch                &scratch);
+      /// Tractions and pressures on the outer boundary faces of one cell.
+      void
+      assemble_cell_boundary(const active_cell_iterator &cell,
+                             const DeckLoads<dim>       &loads,
+                             CellScratch                &scratch);
       void
       add_coupling_to_matrix();
 
@@ -202,11 +216,11 @@ namespace porofrac
       AffineConstraints<double> constraints;
       AffineConstraints<double> constraints_hom;
 
-      SparsityPattern      sparsity;
-      SparseMatrix<double> K_full;      ///< unconstrained elasticity (residuals)
-      SparseMatrix<double> base_matrix; ///< constrained K + B^T
-      Vector<double>       f;           ///< load vector: f_fixed + p_E loads
-      Vector<double>       f_fixed;     ///< the deck's loads only
+      SparsityPattern                         sparsity;
+      SparseMatrix<double>                    K_full;      ///< unconstrained elasticity (residuals)
+      SparseMatrix<double>                    base_matrix; ///< constrained K + B^T
+      Vector<double>                          f;           ///< load vector: f_fixed + p_E loads
+      Vector<double>                          f_fixed;     ///< the deck's loads only
       std::vector<std::vector<CouplingEntry>> coupling;
       /// Per active cell: (dof, int_K div phi_dof) so that int_K div u = sum value * u(dof).
       std::vector<std::vector<std::pair<types::global_dof_index, double>>> divergence;
