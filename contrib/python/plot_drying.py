@@ -1,24 +1,26 @@
 #!/usr/bin/python3
 """Reproduces the paper's Figs. 14-18 (Section 5.3) from PoroFrac runs of prm/drying_cylinder.prm
-written with `Output/Format = vtk`.
+(VTU, the deck's format, or legacy VTK with `Output/Format = vtk`).
 
-Usage: plot_drying.py --as AS_DIR --ssn SSN_DIR --as-u AS_U_DIR [--fields FIELDS_DIR]
-                      [--anderson ANDERSON_DIR] --out PICTURE_DIR
+Usage: plot_drying.py --fields FIELDS_DIR --out PICTURE_DIR
+                      [--as AS_DIR --ssn SSN_DIR [--as-u AS_U_DIR] [--anderson ANDERSON_DIR]]
+  FIELDS_DIR    the run whose fracture states, apertures and final fields are drawn: Figs. 14,
+                16, 17 (drying_fig14_states.png, drying_fig16_aperture.png,
+                drying_fig17_fields.png); default AS_DIR
   AS_DIR        active set + Newton-Krylov on p_E
   SSN_DIR       semi-smooth Newton (c = 1e9) + Newton-Krylov on p_E
   AS_U_DIR      active set + Newton-Krylov on u
-  FIELDS_DIR    the run whose fracture states, apertures and final fields are drawn (Figs. 14,
-                16, 17); default AS_DIR
-  ANDERSON_DIR  optional: active set + Anderson on p_E, added to Figs. 15 and 18
-Writes drying_fig14_states.png, drying_fig15_width.png, drying_fig16_aperture.png,
-drying_fig17_fields.png, drying_fig18_iterations.png into PICTURE_DIR.
+  ANDERSON_DIR  active set + Anderson on p_E
+  With --as and --ssn, also Figs. 15 and 18 (drying_fig15_width.png, drying_fig18_iterations.png).
 
        plot_drying.py --iterations-only PICTURE.png --as AS_DIR [--ssn SSN_DIR]
-                      [--as-u AS_U_DIR] [--anderson ANDERSON_DIR] [--title TITLE]
+                      [--as-u AS_U_DIR] [--anderson ANDERSON_DIR] [--deck DECK_DIR] [--title TITLE]
   Fig. 18 alone, for whichever runs are given (their history.csv is enough).
 
        plot_drying.py --width-only PICTURE.png --as AS_DIR [--ssn SSN_DIR] [--anderson DIR]
   Fig. 15 alone (history.csv is enough).
+
+The radial section is drawn with the axial coordinate x and the radius r.
 """
 import argparse
 import csv
@@ -30,10 +32,11 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(__file__))
-from plot_mesh import read_legacy_vtk  # noqa: E402
+from plot_mesh import read_fields  # noqa: E402
 
 YEAR = 3.15576e7
 STATE_NAMES = ["open", "stick", "slip"]
@@ -54,18 +57,18 @@ def read_pvd(directory):
 
 
 def snapshots(directory, times):
-    """The fracture VTK files closest to the requested times (s)."""
+    """(time, base name, extension) of the datasets closest to the requested times (s)."""
     entries = read_pvd(directory)
     chosen = []
     for t in times:
         best = min(entries, key=lambda e: abs(e[0] - t))
-        base = best[1][:-len(".vtk")]
-        chosen.append((best[0], os.path.join(directory, base)))
+        base, extension = os.path.splitext(best[1])
+        chosen.append((best[0], os.path.join(directory, base), extension))
     return chosen
 
 
-def fracture_segments(base):
-    points, cells, data = read_legacy_vtk(base + "_fractures.vtk")
+def fracture_segments(base, extension):
+    points, cells, data = read_fields(base + "_fractures" + extension)
     segments = [[points[c[0]], points[c[1]]] for c in cells]
     return segments, data
 
@@ -73,8 +76,13 @@ def fracture_segments(base):
 def plot_fracture_field(directory, times, picture, field, title, states=False):
     shots = snapshots(directory, times)
     fig, axes = plt.subplots(len(shots), 1, figsize=(9, 2.6 * len(shots)), sharex=True)
-    for ax, (t, base) in zip(axes, shots):
-        segments, data = fracture_segments(base)
+    fields = [fracture_segments(base, extension) for _, base, extension in shots]
+    # One colour scale for every panel, so that the panels can be compared; logarithmic, since
+    # apertures range from d_0 = 1 mm on closed faces to about ten times that at the wall.
+    if not states:
+        values = [1e3 * v for _, data in fields for v in data[field]]
+        norm = matplotlib.colors.LogNorm(vmin=min(values), vmax=max(values))
+    for ax, (t, _, _), (segments, data) in zip(axes, shots, fields):
         if states:
             colours = [STATE_COLOURS[int(round(v))] for v in data["state"]]
             ax.add_collection(LineCollection(segments, colors=colours, linewidths=3))
@@ -82,15 +90,23 @@ def plot_fracture_field(directory, times, picture, field, title, states=False):
                 ax.plot([], [], color=colour, lw=3, label=name)
             ax.legend(loc="upper right", fontsize=8, ncol=3)
         else:
-            lc = LineCollection(segments, array=data[field], cmap="viridis", linewidths=3)
+            lc = LineCollection(segments, array=[1e3 * v for v in data[field]], cmap="viridis",
+                                norm=norm, linewidths=3)
             ax.add_collection(lc)
-            fig.colorbar(lc, ax=ax, label="aperture (m)")
         ax.set_xlim(0, 10)
         ax.set_ylim(4.9, 6.6)
         ax.set_ylabel("r (m)")
         ax.set_title(f"{title}, t = {t / YEAR:.3g} years", fontsize=10)
     axes[-1].set_xlabel("x (m)")
     fig.tight_layout()
+    if not states:
+        fig.subplots_adjust(right=0.86)
+        bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap="viridis"),
+                           cax=fig.add_axes([0.89, 0.1, 0.02, 0.8]), label="aperture (mm)")
+        bar.set_ticks([v for v in (1, 1.5, 2, 3, 4, 6, 8, 10, 15, 20)
+                       if norm.vmin <= v <= norm.vmax])
+        bar.ax.yaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+        bar.ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     fig.savefig(picture, dpi=120)
     plt.close(fig)
 
@@ -113,14 +129,14 @@ def plot_width(runs, picture):
 
 def plot_fields(directory, picture):
     t, base = read_pvd(directory)[-1]
-    points, cells, data = read_legacy_vtk(os.path.join(directory, base))
+    points, cells, data = read_fields(os.path.join(directory, base))
     triangles = [[points[i] for i in c] for c in cells if len(c) == 3]
     fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
-    for ax, (name, label) in zip(axes, [("s_nw", "gas saturation"),
-                                        ("p_E", "equivalent pressure (Pa)"),
-                                        ("porosity", "porosity")]):
-        pc = PolyCollection(triangles, array=data[name], cmap="viridis", edgecolors="face",
-                            linewidths=0.3)
+    for ax, (name, label, scale) in zip(axes, [("s_nw", "gas saturation", 1),
+                                               ("p_E", "equivalent pressure (MPa)", 1e-6),
+                                               ("porosity", "porosity", 1)]):
+        pc = PolyCollection(triangles, array=[scale * v for v in data[name]], cmap="viridis",
+                            edgecolors="face", linewidths=0.3)
         ax.add_collection(pc)
         fig.colorbar(pc, ax=ax, label=label)
         ax.set_xlim(0, 10)
@@ -156,11 +172,12 @@ def plot_iterations(runs, picture, title=None):
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--as", dest="as_dir", required=True)
+    parser.add_argument("--as", dest="as_dir")
     parser.add_argument("--ssn")
     parser.add_argument("--as-u", dest="as_u")
     parser.add_argument("--fields")
     parser.add_argument("--anderson")
+    parser.add_argument("--deck", help="--iterations-only: the deck's run, for reference")
     parser.add_argument("--out")
     parser.add_argument("--iterations-only")
     parser.add_argument("--title")
@@ -176,26 +193,31 @@ def main():
         runs = [(d, label) for d, label in [(a.as_dir, "active set + NK(p_E)"),
                                             (a.ssn, "semi-smooth Newton + NK(p_E)"),
                                             (a.as_u, "active set + NK(u)"),
-                                            (a.anderson, "active set + Anderson(p_E)")] if d]
+                                            (a.anderson, "active set + Anderson(p_E)"),
+                                            (a.deck, "deck: active set + Anderson(p_E), "
+                                                     "extrapolated start")] if d]
         plot_iterations(runs, a.iterations_only, a.title)
         return
-    if not (a.ssn and a.as_u and a.out):
-        parser.error("--ssn, --as-u and --out are required unless --iterations-only is given")
     fields = a.fields or a.as_dir
+    if not (a.out and fields):
+        parser.error("--out and --fields (or --as) are required")
     times = [0., 1 * YEAR, 50 * YEAR, 200 * YEAR]
     plot_fracture_field(fields, times, os.path.join(a.out, "drying_fig14_states.png"), "state",
                         "contact state", states=True)
+    plot_fracture_field(fields, times, os.path.join(a.out, "drying_fig16_aperture.png"),
+                        "aperture", "aperture")
+    plot_fields(fields, os.path.join(a.out, "drying_fig17_fields.png"))
+    if not (a.as_dir and a.ssn):
+        return
     widths = [(a.as_dir, "active set (c = 1e6) + NK(p_E)", "-"),
               (a.ssn, "semi-smooth Newton (c = 1e9) + NK(p_E)", "--")]
-    iterations = [(a.as_dir, "active set + NK(p_E)"), (a.ssn, "semi-smooth Newton + NK(p_E)"),
-                  (a.as_u, "active set + NK(u)")]
+    iterations = [(a.as_dir, "active set + NK(p_E)"), (a.ssn, "semi-smooth Newton + NK(p_E)")]
+    if a.as_u:
+        iterations.append((a.as_u, "active set + NK(u)"))
     if a.anderson:
         widths.append((a.anderson, "active set + Anderson(p_E)", ":"))
         iterations.append((a.anderson, "active set + Anderson(p_E)"))
     plot_width(widths, os.path.join(a.out, "drying_fig15_width.png"))
-    plot_fracture_field(fields, times, os.path.join(a.out, "drying_fig16_aperture.png"),
-                        "aperture", "aperture")
-    plot_fields(fields, os.path.join(a.out, "drying_fig17_fields.png"))
     plot_iterations(iterations, os.path.join(a.out, "drying_fig18_iterations.png"))
 
 

@@ -1,10 +1,20 @@
 #!/usr/bin/python3
-"""Plots a PoroFrac cut mesh and its fractures from the legacy VTK files that
-`porofrac DECK --set Output/Format=vtk` writes (mesh.vtk, mesh_fractures.vtk).
+"""Plots a PoroFrac cut mesh and its fractures from the files a run writes (mesh.vtu and
+mesh_fractures.vtu, or mesh.vtk and mesh_fractures.vtk with `Output/Format = vtk`).
 
-Usage: plot_mesh.py OUTPUT_DIR PICTURE.png [--zoom x0 x1 y0 y1]
+Usage: plot_mesh.py OUTPUT_DIR PICTURE.png [--zoom x0 x1 y0 y1] [--axes x,r]
+  --axes: names of the two coordinates on the axis labels (default x,y; the radial section of an
+          axisymmetric scene is (x, r)).
+
+Also the readers of the other plotting scripts: read_fields(path) returns the points, cells and
+cell data of a .vtk (legacy ASCII) or .vtu (XML, ASCII or deal.II's zlib-compressed binary) file.
 """
+import base64
+import os
+import struct
 import sys
+import xml.etree.ElementTree as ElementTree
+import zlib
 
 import matplotlib
 
@@ -59,12 +69,85 @@ def read_legacy_vtk(path):
     return points, cells, data
 
 
+_TYPES = {"Float32": "f", "Float64": "d", "Int32": "i", "UInt32": "I", "Int64": "q",
+          "UInt64": "Q", "UInt8": "B", "Int8": "b"}
+
+
+def _data_array(element, compressed):
+    """The values of a VTU DataArray (ascii, or base64 binary, zlib-compressed or not)."""
+    kind = _TYPES[element.get("type")]
+    if element.get("format") == "ascii":
+        values = (element.text or "").split()
+        return [float(v) for v in values] if kind in "fd" else [int(float(v)) for v in values]
+    text = "".join((element.text or "").split())
+    size = struct.calcsize(kind)
+    if not compressed:
+        raw = base64.b64decode(text)
+        n = struct.unpack("<I", raw[:4])[0]
+        return list(struct.unpack("<%d%s" % (n // size, kind), raw[4:4 + n]))
+    # Header (UInt32): number of blocks, block size, last block size, compressed block sizes;
+    # base64-encoded on its own, followed by the base64 of the concatenated compressed blocks.
+    n_blocks = struct.unpack("<I", base64.b64decode(text[:8])[:4])[0]
+    header_chars = ((4 * (3 + n_blocks) + 2) // 3) * 4
+    header = struct.unpack("<%dI" % (3 + n_blocks), base64.b64decode(text[:header_chars]))
+    data = base64.b64decode(text[header_chars:])
+    raw, offset = b"", 0
+    for k in range(n_blocks):
+        raw += zlib.decompress(data[offset:offset + header[3 + k]])
+        offset += header[3 + k]
+    return list(struct.unpack("<%d%s" % (len(raw) // size, kind), raw))
+
+
+def read_vtu(path):
+    """Points (x, y), cells (lists of point indices) and cell data of a VTU unstructured grid.
+    POINT_DATA arrays are averaged over the points of each cell, as in read_legacy_vtk."""
+    root = ElementTree.parse(path).getroot()
+    compressed = root.get("compressor") is not None
+    piece = root.find("UnstructuredGrid/Piece")
+    xyz = _data_array(piece.find("Points/DataArray"), compressed)
+    points = [xyz[3 * k:3 * k + 2] for k in range(len(xyz) // 3)]
+    arrays = {a.get("Name"): a for a in piece.find("Cells")}
+    connectivity = _data_array(arrays["connectivity"], compressed)
+    offsets = _data_array(arrays["offsets"], compressed)
+    cells, start = [], 0
+    for end in offsets:
+        cells.append(connectivity[start:end])
+        start = end
+    data = {}
+    for location in ("CellData", "PointData"):
+        block = piece.find(location)
+        if block is None:
+            continue
+        for a in block:
+            if int(a.get("NumberOfComponents", "1")) != 1:
+                continue
+            values = _data_array(a, compressed)
+            if location == "PointData":
+                values = [sum(values[p] for p in c) / len(c) for c in cells]
+            data[a.get("Name")] = values
+    return points, cells, data
+
+
+def read_fields(path):
+    """read_vtu or read_legacy_vtk, by the file's extension."""
+    return read_vtu(path) if path.endswith(".vtu") else read_legacy_vtk(path)
+
+
+def mesh_file(directory, name):
+    """DIRECTORY/NAME.vtu if it exists, else DIRECTORY/NAME.vtk."""
+    vtu = os.path.join(directory, name + ".vtu")
+    return vtu if os.path.exists(vtu) else os.path.join(directory, name + ".vtk")
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     directory, picture = sys.argv[1], sys.argv[2]
-    points, cells, _ = read_legacy_vtk(directory + "/mesh.vtk")
-    fpoints, fcells, fdata = read_legacy_vtk(directory + "/mesh_fractures.vtk")
+    points, cells, _ = read_fields(mesh_file(directory, "mesh"))
+    fpoints, fcells, fdata = read_fields(mesh_file(directory, "mesh_fractures"))
+    names = ["x", "y"]
+    if "--axes" in sys.argv:
+        names = sys.argv[sys.argv.index("--axes") + 1].split(",")
     triangles = [c for c in cells if len(c) == 3]
     fig, ax = plt.subplots(figsize=(10, 5.5))
     segments = []
@@ -87,8 +170,8 @@ def main():
         x0, x1, y0, y1 = map(float, sys.argv[k + 1:k + 5])
         ax.set_xlim(x0, x1)
         ax.set_ylim(y0, y1)
-    ax.set_xlabel("x (m)")
-    ax.set_ylabel("y (m)")
+    ax.set_xlabel(names[0] + " (m)")
+    ax.set_ylabel(names[1] + " (m)")
     ax.set_title(f"Cut mesh: {len(triangles)} triangles, {len(fcells)} fracture faces")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
     fig.tight_layout()
