@@ -67,26 +67,39 @@ namespace porofrac
 
     template <int dim>
     LocalContactLaw<dim>
-    ContactSolver<dim>::local_law(const unsigned int    f,
-                                  const Tensor<1, dim> &jump,
-                                  const double          c) const
+    ContactSolver<dim>::local_law(const unsigned int f, const double slip, const double c) const
     {
-      return {friction_field.coefficient(f, LocalContactLaw<dim>::tangential(jump).norm()), c};
+      return {friction_field.coefficient(f, slip), c};
     }
 
 
 
     template <int dim>
-    std::pair<Tensor<1, dim>, Tensor<1, dim>>
+    typename ContactSolver<dim>::FaceValues
     ContactSolver<dim>::local_values(const Vector<double> &u,
                                      const Vector<double> &lambda,
                                      const unsigned int    f) const
     {
       const Tensor<2, dim> R = system.frame(f);
-      Tensor<1, dim>       l;
+      FaceValues           v;
       for (unsigned int d = 0; d < dim; ++d)
-        l[d] = lambda(dim * f + d);
-      return {R * l, R * system.jump(u, f)};
+        v.lambda[d] = lambda(dim * f + d);
+      v.lambda = R * v.lambda;
+      v.jump   = R * system.jump(u, f);
+      v.slip   = LocalContactLaw<dim>::tangential(v.jump).norm();
+      // Paper (25): the tangential part is the increment over the time step.
+      if (!previous_jump.empty())
+        v.jump -= LocalContactLaw<dim>::tangential(R * previous_jump[f]);
+      return v;
+    }
+
+
+
+    template <int dim>
+    void
+    ContactSolver<dim>::set_previous_jumps(const std::vector<Tensor<1, dim>> &jumps)
+    {
+      previous_jump = jumps;
     }
 
 
@@ -95,7 +108,9 @@ namespace porofrac
     double
     ContactSolver<dim>::friction(const Vector<double> &u, const unsigned int f) const
     {
-      return local_law(f, system.frame(f) * system.jump(u, f), prm.c).F;
+      const double slip =
+        LocalContactLaw<dim>::tangential(system.frame(f) * system.jump(u, f)).norm();
+      return friction_field.coefficient(f, slip);
     }
 
 
@@ -106,8 +121,8 @@ namespace porofrac
                               const Vector<double> &lambda,
                               const unsigned int    f) const
     {
-      const auto [l, j] = local_values(u, lambda, f);
-      return local_law(f, j, prm.c).state(l, j);
+      const FaceValues v = local_values(u, lambda, f);
+      return local_law(f, v.slip, prm.c).state(v.lambda, v.jump);
     }
 
 
@@ -137,8 +152,9 @@ namespace porofrac
       // Contact rows, (25)-(26) scaled to stress units, weighted by |sigma|.
       for (unsigned int fi = 0; fi < coupling.size(); ++fi)
         {
-          const auto [l, j]              = local_values(u, lambda, fi);
-          const LocalContactLaw<dim> law = local_law(fi, j, c);
+          const FaceValues           v = local_values(u, lambda, fi);
+          const Tensor<1, dim>      &l = v.lambda, &j = v.jump;
+          const LocalContactLaw<dim> law = local_law(fi, v.slip, c);
           const double               w   = system.face_measure(fi);
           parts.contact += w * law.residual(l, j, true).norm_square();
           parts.contact_unscaled += w * law.residual(l, j, false).norm_square();
@@ -213,10 +229,11 @@ namespace porofrac
       // Face rows A_l R lambda + A_j R [u] = r of the contact method, for the increment.
       for (unsigned int fi = 0; fi < coupling.size(); ++fi)
         {
-          const Tensor<2, dim> R = system.frame(fi);
-          const auto [l, j]      = local_values(u, lambda, fi);
-          LocalRows<dim> lr;
-          states[fi]              = method->rows(local_law(fi, j, c), l, j, lr);
+          const Tensor<2, dim>  R = system.frame(fi);
+          const FaceValues      v = local_values(u, lambda, fi);
+          const Tensor<1, dim> &l = v.lambda, &j = v.jump;
+          LocalRows<dim>        lr;
+          states[fi]              = method->rows(local_law(fi, v.slip, c), l, j, lr);
           const Tensor<1, dim> rs = lr.rhs - lr.A_lambda * l - lr.A_jump * j;
           rows.lambda[fi]         = lr.A_lambda * R;
           rows.jump[fi]           = lr.A_jump * R;

@@ -60,6 +60,17 @@ namespace porofrac
       void
       set_contact_solver(const std::string &method, const double c, const bool stick_guess);
 
+      /// Time-dependent problems: the current jumps become those of the previous time step,
+      /// from which the tangential conditions (25) count the slip (ContactSolver).
+      void
+      accept_time_step()
+      {
+        std::vector<Tensor<1, dim>> jumps(system.get_mesh().fracture_faces.size());
+        for (unsigned int f = 0; f < jumps.size(); ++f)
+          jumps[f] = jump(f);
+        solver.set_previous_jumps(jumps);
+      }
+
       /// Poromechanical loads of eq. (11b) (ElasticitySystem::set_equivalent_pressures).
       void
       set_equivalent_pressures(const std::vector<double> &p_E_matrix,

@@ -80,6 +80,14 @@ namespace porofrac
       /// on the mesh only (K, its Cholesky factors, W).
       void
       reset();
+      /**
+       * Time-dependent problems: the face jumps [u_old]_sigma (global frame) of the previous
+       * time step, from which the Coulomb conditions (25) count the tangential jump
+       * [u - u_old]_tau. Without a call (static problems) u_old = 0.
+       */
+      void
+      set_previous_jumps(const std::vector<Tensor<1, dim>> &jumps);
+
       /// Forgets the linear solver altogether (after the system was set up again).
       void
       clear();
@@ -123,14 +131,20 @@ namespace porofrac
       /// when lambda = 0.
       double
       relative_residual(const Vector<double> &u, const Vector<double> &lambda) const;
-      /// Multiplier and jump of face @p f at (u, lambda), in the face's local frame.
-      std::pair<Tensor<1, dim>, Tensor<1, dim>>
+      /// Multiplier and jump of a face in its local frame (the tangential jump counted from
+      /// the previous jumps, if set), and its slip |[u]_tau| (total).
+      struct FaceValues
+      {
+        Tensor<1, dim> lambda, jump;
+        double         slip = 0;
+      };
+      FaceValues
       local_values(const Vector<double> &u,
                    const Vector<double> &lambda,
                    const unsigned int    f) const;
-      /// The local law of face @p f at multiplier and jump @p lambda, @p jump (local frame).
+      /// The local law of face @p f at slip @p slip with parameter @p c.
       LocalContactLaw<dim>
-      local_law(const unsigned int f, const Tensor<1, dim> &jump, const double c) const;
+      local_law(const unsigned int f, const double slip, const double c) const;
 
       void
       set_initial_guess(Vector<double> &u, Vector<double> &lambda) const;
@@ -167,6 +181,7 @@ namespace porofrac
 
       /// State of the current solve: its statistics, the face states of every iterate (for
       /// the cycling safeguard) and whether the line search has been switched on.
+      std::vector<Tensor<1, dim>>         previous_jump;
       ContactStatistics                   stats;
       std::vector<std::vector<FaceState>> seen_states;
       bool                                line_search_on = false;

@@ -23,7 +23,7 @@ namespace porofrac
 
     /**
      * Linear solves of the contact iterations through the Schur complement on the multipliers.
-     * The Jacobian of (27) with the face rows of Section 5.1 / specs.md 3a reads
+     * The Jacobian of (27) with the face rows of doc/algorithms.md §2-§3 reads
      *
      *   [ K       B^T ] [du]   [r_u]        K: constrained elasticity (constant),
      *   [ A_j J   A_l ] [dl] = [r_l],       B^T: coupling, B^T = J^T M (M = face measures),
