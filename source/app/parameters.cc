@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/parameters.h>
 #include <porofrac/coupling/scene.h>
-#include <porofrac/flow/scene.h>
+#include <porofrac/flow/parameters.h>
 #include <porofrac/geometry/parameters.h>
 #include <porofrac/mechanics/scene.h>
 
@@ -49,7 +49,7 @@ namespace porofrac
       // MECHANICS HOOK (declare)
       mechanics::declare_parameters(prm);
       // FLOW HOOK (declare)
-      flow::declare_parameters(prm);
+      flow::FlowParameters::declare_parameters(prm);
       coupling::declare_parameters(prm);
     }
   } // namespace app
