@@ -88,7 +88,7 @@ int
 main()
 {
   const double p_e = 5e3;
-  for (const std::string &lambda_text : {"2", "0.7", "1"})
+  for (const std::string lambda_text : {"2", "0.7", "1"})
     {
       const auto           law    = brooks_corey("5e3", lambda_text);
       const SaturationLaw &bc     = *law;
