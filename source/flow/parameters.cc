@@ -442,12 +442,17 @@ namespace porofrac
 
     namespace
     {
-      /// A ParameterHandler with the Flow subsection declared and @p values set in Flow/<rock>.
-      void
-      prepare_rock_entries(ParameterHandler                         &prm,
-                           const std::map<std::string, std::string> &values,
-                           const Rock                                rock)
+      /// The law @p name of @p registry, parsed from a ParameterHandler with the Flow subsection
+      /// declared and @p values set in Flow/<rock>; errors name @p selection.
+      template <typename RegistryType>
+      auto
+      make_law(const RegistryType                       &registry,
+               const std::string                        &selection,
+               const std::string                        &name,
+               const std::map<std::string, std::string> &values,
+               const Rock                                rock)
       {
+        ParameterHandler prm;
         FlowParameters::declare_parameters(prm);
         prm.enter_subsection("Flow");
         prm.enter_subsection(rock_names[rock]);
@@ -455,6 +460,10 @@ namespace porofrac
           prm.set(entry, value);
         prm.leave_subsection();
         prm.leave_subsection();
+        return registry.create(name,
+                               std::string("Flow/") + rock_names[rock] + "/" + selection,
+                               prm,
+                               {"Flow", rock_names[rock]});
       }
     } // namespace
 
@@ -463,13 +472,7 @@ namespace porofrac
                         const std::map<std::string, std::string> &values,
                         const Rock                                rock)
     {
-      ParameterHandler prm;
-      prepare_rock_entries(prm, values, rock);
-      return SaturationLawRegistry::instance().create(name,
-                                                      std::string("Flow/") + rock_names[rock] +
-                                                        "/Saturation law",
-                                                      prm,
-                                                      {"Flow", rock_names[rock]});
+      return make_law(SaturationLawRegistry::instance(), "Saturation law", name, values, rock);
     }
 
     std::shared_ptr<const RelativePermeability>
@@ -477,14 +480,8 @@ namespace porofrac
                                const std::map<std::string, std::string> &values,
                                const Rock                                rock)
     {
-      ParameterHandler prm;
-      prepare_rock_entries(prm, values, rock);
-      return RelativePermeabilityRegistry::instance().create(name,
-                                                             std::string("Flow/") +
-                                                               rock_names[rock] +
-                                                               "/Relative permeability",
-                                                             prm,
-                                                             {"Flow", rock_names[rock]});
+      return make_law(
+        RelativePermeabilityRegistry::instance(), "Relative permeability", name, values, rock);
     }
   } // namespace flow
 } // namespace porofrac

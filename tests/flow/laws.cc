@@ -13,33 +13,14 @@
 #include <functional>
 #include <iostream>
 
+#include "law_test_tools.h"
+
 using namespace porofrac;
 using namespace porofrac::flow;
+using namespace law_test;
 
 namespace
 {
-  unsigned int failures = 0;
-
-  void
-  check(const std::string &what, const double value, const double expected, const double tol)
-  {
-    const double err = std::abs(value - expected) / std::max(1., std::abs(expected));
-    if (err <= tol)
-      std::cout << "ok: " << what << std::endl;
-    else
-      {
-        ++failures;
-        std::cout << "FAILED: " << what << " value " << value << " expected " << expected
-                  << std::endl;
-      }
-  }
-
-  double
-  fd(const std::function<double(double)> &f, const double x, const double h)
-  {
-    return (f(x + h) - f(x - h)) / (2 * h);
-  }
-
   // Independent midpoint-rule quadrature of U = int_0^pc q S'(q) dq with 2e5 intervals.
   double
   energy_quadrature(const SaturationLaw &law, const double pc)
@@ -52,22 +33,6 @@ namespace
         U += q * law.derivative(q) * pc / n;
       }
     return U;
-  }
-
-  template <typename F>
-  void
-  expect_error(const std::string &what, F f)
-  {
-    try
-      {
-        f();
-        ++failures;
-        std::cout << "FAILED: no error for " << what << std::endl;
-      }
-    catch (const InputError &e)
-      {
-        std::cout << "error (" << what << "): " << e.what() << std::endl;
-      }
   }
 } // namespace
 
