@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/parameters.h>
 #include <porofrac/coupling/scene.h>
-#include <porofrac/flow/scene.h>
+#include <porofrac/flow/parameters.h>
 #include <porofrac/geometry/parameters.h>
 #include <porofrac/io/output_parameters.h>
 #include <porofrac/mechanics/parameters.h>
@@ -29,7 +29,7 @@ namespace porofrac
 
       geometry::GeometryParameters::declare_parameters(prm);
       mechanics::ContactParameters::declare_parameters(prm);
-      flow::declare_parameters(prm);
+      flow::FlowParameters::declare_parameters(prm);
       coupling::declare_parameters(prm);
     }
   } // namespace app

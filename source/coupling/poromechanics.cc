@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
+#include <porofrac/coupling/closure.h>
 #include <porofrac/coupling/poromechanics.h>
-#include <porofrac/flow/laws.h>
 #include <porofrac/io/text.h>
 
 #include <cmath>
@@ -40,11 +40,15 @@ namespace porofrac
       p_E_initial = flow_equivalent_pressure();
       p_E         = p_E_initial;
       p_E_old     = p_E_initial;
-      solver.set_biot_storage(std::vector<double>(n_matrix, flow.initial_porosity),
-                              std::vector<double>(p_E_initial.begin(),
-                                                  p_E_initial.begin() + n_matrix),
-                              1. / parameters.biot_modulus,
-                              parameters.capillary_energy);
+      storage =
+        std::make_shared<BiotStorage<dim>>(*flow.grid,
+                                           flow.rocks[flow::matrix_rock].saturation,
+                                           1. / parameters.biot_modulus,
+                                           parameters.capillary_energy,
+                                           std::vector<double>(p_E_initial.begin(),
+                                                               p_E_initial.begin() + n_matrix),
+                                           std::vector<double>(n_matrix, flow.initial_porosity));
+      solver.set_storage_model(storage);
       // (u^0, lambda^0): the contact problem without time variable for p_E^0, from the deck's
       // initial guess (paper: open at the first step).
       solve_mechanics(p_E_initial);
@@ -94,18 +98,19 @@ namespace porofrac
     void
     Poromechanics<dim>::set_flow_inputs(const Vector<double> &y)
     {
-      auto &grid   = *flow.grid;
-      auto &solver = *flow.solver;
+      auto &grid = *flow.grid;
       // (11d): phi = phi_0 + b div(u - u^0) + (p_E - p_E^0)/M; the last term is implicit in the
       // flow solve, the first two are frozen during it.
-      std::vector<double> base(n_matrix);
+      std::vector<double> phi_u(n_matrix);
       for (unsigned int K = 0; K < n_matrix; ++K)
-        base[K] = flow.initial_porosity + parameters.biot_coefficient * (y[K] - y_initial[K]);
-      solver.set_porosity_base(base);
+        phi_u[K] = displacement_porosity(flow.initial_porosity,
+                                         parameters.biot_coefficient,
+                                         y[K] - y_initial[K]);
+      storage->set_displacement_porosity(phi_u);
       // (11d): d_f = d_0 - [u]_n.
       for (unsigned int f = 0; f < n_fracture; ++f)
         {
-          const double d = flow.initial_aperture - y[n_matrix + f];
+          const double d = aperture(flow.initial_aperture, y[n_matrix + f]);
           if (!(d > 0))
             throw SolverFailure("the aperture of fracture face " + std::to_string(f) +
                                 " became non-positive (" + io::to_text(d) + " m)");
@@ -138,10 +143,26 @@ namespace porofrac
     Poromechanics<dim>::flow_equivalent_pressure() const
     {
       const auto    &solver = *flow.solver;
+      const auto    &state  = solver.state;
       Vector<double> x(n_matrix + n_fracture);
       for (unsigned int i = 0; i < n_matrix + n_fracture; ++i)
-        x[i] = solver.equivalent_pressure(solver.state, i);
+        x[i] = coupling::equivalent_pressure(*flow.rocks[flow.grid->nodes[i].rock].saturation,
+                                             solver.pressure(state, i, 0),
+                                             state[i][1] - state[i][0],
+                                             parameters.capillary_energy);
       return x;
+    }
+
+
+
+    template <int dim>
+    double
+    Poromechanics<dim>::matrix_porosity(const unsigned int K) const
+    {
+      const auto &solver = *flow.solver;
+      return storage->porosity(K,
+                               solver.pressure(solver.state, K, 0),
+                               solver.state[K][1] - solver.state[K][0]);
     }
 
 
@@ -198,7 +219,7 @@ namespace porofrac
       if (parameters.kozeny_carman)
         for (unsigned int K = 0; K < n_matrix; ++K)
           grid.permeability[K] =
-            flow::kozeny_carman(flow.initial_permeability, flow.initial_porosity, grid.porosity[K]);
+            kozeny_carman(flow.initial_permeability, flow.initial_porosity, grid.porosity[K]);
       solver.begin_time_step();
       flow_guess = solver.old_state;
       {
@@ -281,11 +302,10 @@ namespace porofrac
     void
     Poromechanics<dim>::accept_time_step()
     {
-      auto &solver = *flow.solver;
-      auto &grid   = *flow.grid;
+      auto &grid = *flow.grid;
       // The porosity reached by the step, (11d), kept for output and Kozeny-Carman.
       for (unsigned int K = 0; K < n_matrix; ++K)
-        grid.porosity[K] = solver.porosity(solver.state, K);
+        grid.porosity[K] = matrix_porosity(K);
       p_E_older = p_E_old;
       y_older   = y_old;
       dt_old    = dt;
@@ -308,8 +328,8 @@ namespace porofrac
       for (unsigned int K = 0; K < n_matrix; ++K)
         {
           const double pc = solver.state[K][1] - solver.state[K][0];
-          e.capillary_matrix += solver.porosity(solver.state, K) *
-                                flow.rocks[flow::matrix_rock].saturation.energy(pc) *
+          e.capillary_matrix += matrix_porosity(K) *
+                                flow.rocks[flow::matrix_rock].saturation->energy(pc) *
                                 grid.nodes[K].measure;
           e.storage += p_E[K] * p_E[K] * grid.nodes[K].measure / (2 * parameters.biot_modulus);
         }
@@ -318,7 +338,7 @@ namespace porofrac
           const unsigned int i  = n_matrix + f;
           const double       pc = solver.state[i][1] - solver.state[i][0];
           e.capillary_fracture +=
-            grid.pore_volume(i) * flow.rocks[flow::fracture_rock].saturation.energy(pc);
+            grid.pore_volume(i) * flow.rocks[flow::fracture_rock].saturation->energy(pc);
         }
       e.elastic = mechanics.elastic_energy();
       return e;

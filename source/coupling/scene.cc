@@ -8,6 +8,7 @@
 #include <porofrac/coupling/poromechanics.h>
 #include <porofrac/coupling/scene.h>
 #include <porofrac/flow/model.h>
+#include <porofrac/flow/parameters.h>
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/io/text.h>
 #include <porofrac/mechanics/contact_output.h>
@@ -138,7 +139,7 @@ namespace porofrac
       /// Relative L2 error (cell-measure weighted) of the matrix wetting pressure at time t.
       template <int dim>
       void
-      report_terzaghi_error(const ParameterHandler             &prm,
+      report_terzaghi_error(const flow::FlowParameters         &flow_parameters,
                             const Poromechanics<dim>           &pm,
                             const mechanics::ContactParameters &mp,
                             const CouplingParameters           &cp,
@@ -155,9 +156,8 @@ namespace porofrac
             y_max = std::max(y_max, v[1]);
           }
         Terzaghi exact;
-        exact.height = y_max - y_min;
-        exact.initial_pressure =
-          Utilities::string_to_double(prm.get({"Flow", "Matrix"}, "Initial pressure w"));
+        exact.height           = y_max - y_min;
+        exact.initial_pressure = flow_parameters.initial_pressure[flow::matrix_rock][0];
         exact.drained_pressure =
           solver.matrix_dirichlet.empty() ? 0. : solver.matrix_dirichlet.begin()->second[0];
         exact.consolidation = Terzaghi::coefficient(pm.flow.initial_permeability,
@@ -213,8 +213,10 @@ namespace porofrac
 
       // Inside coupled iterations the flow Newton must be converged tightly (see
       // CouplingParameters); the deck's tolerances are the upper bounds.
+      flow::FlowParameters flow_parameters;
+      flow_parameters.parse_parameters(prm);
       flow::FlowModel<dim> flow =
-        flow::make_flow_model<dim>(prm, mesh, [&](flow::NewtonParameters &n) {
+        flow::make_flow_model<dim>(flow_parameters, mesh, [&](flow::NewtonParameters &n) {
           // At its noise floor (kinks of S and of the upwinding), accept an inner solve that meets
           // the flow deck's own tolerances instead of cutting the step.
           n.stagnation_update_tolerance = n.update_tolerance;
@@ -377,7 +379,7 @@ namespace porofrac
             mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
           if ((stepping.output_every > 0 && step % stepping.output_every == 0) || done || table)
             output(step, t);
-          // dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max) (specs.md 1.1)
+          // dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max)
           dt = std::min(stepping.growth * dt_step, stepping.maximum_step);
         }
 
@@ -396,7 +398,7 @@ namespace porofrac
                      << (violation_max <= 1e-6 ? "yes" : "NO") << std::endl;
 
       if (prm.get({"Coupling"}, "Analytical solution") == "terzaghi")
-        report_terzaghi_error(prm, pm, mechanics_parameters, parameters, t, context);
+        report_terzaghi_error(flow_parameters, pm, mechanics_parameters, parameters, t, context);
 
       io::Json m                    = io::Json::object();
       m["solver"]                   = prm.get({"Mechanics"}, "Solver");

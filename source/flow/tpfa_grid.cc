@@ -92,6 +92,12 @@ namespace porofrac
                             const std::set<types::boundary_id> &matrix_dirichlet_ids,
                             const std::set<types::boundary_id> &fracture_dirichlet_ids)
     {
+      check_input(dim == 2 || mesh.fracture_faces.empty(),
+                  "Physics",
+                  "two-phase flow in 3D is implemented for meshes without fractures only (the "
+                  "fracture-fracture connections through fracture edges are missing), and this "
+                  "mesh has " +
+                    std::to_string(mesh.fracture_faces.size()) + " fracture faces");
       const auto &tria = mesh.triangulation;
       n_matrix_cells   = tria.n_active_cells();
       n_fracture_cells = mesh.fracture_faces.size();
@@ -227,7 +233,7 @@ namespace porofrac
              0.,
              0.});
 
-      // Fracture-fracture connections through fracture nodes (2D).
+      // Fracture-fracture connections through fracture nodes (2D; 3D meshes have no fractures).
       if (dim == 2)
         {
           std::map<unsigned int, types::boundary_id> vertex_boundary_id;

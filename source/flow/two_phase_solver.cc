@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
 
 #include <porofrac/base/exceptions.h>
-#include <porofrac/base/sparse_lu.h>
 #include <porofrac/flow/two_phase_solver.h>
 
 #include <cmath>
@@ -46,7 +44,8 @@ namespace porofrac
       mean_pore_volume =
         total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       jacobian.reinit(sparsity);
-      lu = std::make_shared<SparseLU>();
+      linear_solver = create_serial_linear_solver(parameters.linear_solver, "Flow/Linear solver");
+      storage       = std::make_shared<GridPorosity<dim>>(grid);
       state.assign(grid.n_nodes(), {{0., 0.}});
       begin_time_step();
     }
@@ -63,58 +62,10 @@ namespace porofrac
 
     template <int dim>
     void
-    TwoPhaseSolver<dim>::set_biot_storage(const std::vector<double> &porosity_base,
-                                          const std::vector<double> &p_E_reference,
-                                          const double               inverse_biot_modulus,
-                                          const bool                 capillary_energy)
+    TwoPhaseSolver<dim>::set_storage_model(const std::shared_ptr<const StorageModel> &model)
     {
-      AssertThrow(p_E_reference.size() == grid.n_matrix_cells,
-                  ExcDimensionMismatch(p_E_reference.size(), grid.n_matrix_cells));
-      check_input(std::isfinite(inverse_biot_modulus) && inverse_biot_modulus >= 0,
-                  "Coupling/Biot modulus",
-                  "1/M must be finite and non-negative");
-      set_porosity_base(porosity_base);
-      p_E_reference_        = p_E_reference;
-      inverse_biot_modulus_ = inverse_biot_modulus;
-      capillary_energy_     = capillary_energy;
-    }
-
-    template <int dim>
-    void
-    TwoPhaseSolver<dim>::set_porosity_base(const std::vector<double> &porosity_base)
-    {
-      AssertThrow(porosity_base.size() == grid.n_matrix_cells,
-                  ExcDimensionMismatch(porosity_base.size(), grid.n_matrix_cells));
-      porosity_base_ = porosity_base;
-      if (!biot)
-        p_E_reference_.assign(grid.n_matrix_cells, 0.);
-      biot = true;
-    }
-
-    template <int dim>
-    double
-    TwoPhaseSolver<dim>::equivalent_pressure(const State &s, const unsigned int node) const
-    {
-      AssertIndexRange(node, grid.n_nodes());
-      // p^E = p^w (1 - S) + p^nw S - U(p_c) = p^w + p_c S - U(p_c) (paper eq. (6)).
-      const SaturationLaw &law = rocks[grid.nodes[node].rock].saturation;
-      const double         pc  = s[node][1] - s[node][0];
-      return s[node][0] + reference_pressure + pc * law.saturation(pc) -
-             (capillary_energy_ ? law.energy(pc) : 0.);
-    }
-
-    template <int dim>
-    double
-    TwoPhaseSolver<dim>::porosity(const State &s, const unsigned int K) const
-    {
-      AssertIndexRange(K, grid.n_matrix_cells);
-      if (!biot)
-        return grid.porosity[K];
-      // Linearised Biot storage, eq. (11d).
-      if (inverse_biot_modulus_ == 0)
-        return porosity_base_[K];
-      return porosity_base_[K] +
-             (equivalent_pressure(s, K) - p_E_reference_[K]) * inverse_biot_modulus_;
+      AssertThrow(model != nullptr, ExcMessage("TwoPhaseSolver needs a storage model"));
+      storage = model;
     }
 
     template <int dim>
@@ -131,21 +82,12 @@ namespace porofrac
                                      const unsigned int     i,
                                      std::array<double, 2> &d) const
     {
-      d = {{0., 0.}};
-      if (i >= grid.n_matrix_cells || !biot)
-        return grid.pore_volume(i);
-      const double measure = grid.nodes[i].measure;
-      if (inverse_biot_modulus_ != 0)
+      if (i >= grid.n_matrix_cells)
         {
-          // d p^E/d p^w = 1 - S, d p^E/d p^nw = S with U (U' = p_c S'); without U, -/+ p_c S'.
-          const SaturationLaw &law = rocks[grid.nodes[i].rock].saturation;
-          const double         pc  = s[i][1] - s[i][0];
-          const double         S   = law.saturation(pc);
-          const double         x   = capillary_energy_ ? 0. : pc * law.derivative(pc);
-          d                        = {{measure * inverse_biot_modulus_ * (1. - S - x),
-                                       measure * inverse_biot_modulus_ * (S + x)}};
+          d = {{0., 0.}};
+          return grid.pore_volume(i);
         }
-      return measure * porosity(s, i);
+      return storage->pore_volume(i, pressure(s, i, 0), s[i][1] - s[i][0], d);
     }
 
     template <int dim>
@@ -207,7 +149,7 @@ namespace porofrac
       const unsigned int e        = up_a ? c.a : c.b;
       const RockType    &rock     = rocks[up_a ? c.rock_a : c.rock_b];
       const double       pc       = s[e][1] - s[e][0];
-      const double       S        = rock.saturation.saturation(pc);
+      const double       S        = rock.saturation->saturation(pc);
       const double       eta      = rock.mobility(phase, S);
       const double       deta_dpc = rock.mobility_derivative(phase, S) * slope(rock, pc);
       const double       T        = c.transmissibility;
@@ -240,14 +182,16 @@ namespace porofrac
           const double PV = pore_volume(s, i, dPV), PV_old = old_pore_volume[i];
           if (PV == 0 && PV_old == 0)
             {
-              // Massless node where the non-wetting phase is absent (p_c <= 0 with the entry
+              // Massless node where the non-wetting phase is absent (p_c <= p_e with the entry
               // slope active; S < 1e-6 with the capillary bound, where the phase's mobilities
               // can all vanish): a Jacobian-only virtual pore volume keeps its rows
               // non-singular. Above 1e-6 the Jacobian stays exact (quadratic convergence).
-              const double pc     = s[i][1] - s[i][0];
-              const bool   absent = parameters.capillary_bound ?
-                                      rocks[grid.nodes[i].rock].saturation.saturation(pc) < 1e-6 :
-                                      pc <= 0 && parameters.entry_slope && entry_slope_active;
+              const SaturationLaw &law = *rocks[grid.nodes[i].rock].saturation;
+              const double         pc  = s[i][1] - s[i][0];
+              const bool           absent =
+                parameters.capillary_bound ?
+                            law.saturation(pc) < 1e-6 :
+                            pc <= law.entry_pressure() && parameters.entry_slope && entry_slope_active;
               if (!(J && absent))
                 continue;
               const double dS  = slope(rocks[grid.nodes[i].rock], pc);
@@ -260,8 +204,8 @@ namespace porofrac
             }
           const RockType &rock  = rocks[grid.nodes[i].rock];
           const double    pc    = s[i][1] - s[i][0];
-          const double    S     = rock.saturation.saturation(pc);
-          const double    S_old = rock.saturation.saturation(old[i][1] - old[i][0]);
+          const double    S     = rock.saturation->saturation(pc);
+          const double    S_old = rock.saturation->saturation(old[i][1] - old[i][0]);
           const double    dSdpc = slope(rock, pc);
           residual(dof(i, 1)) += PV * S - PV_old * S_old;
           residual(dof(i, 0)) += PV * (1. - S) - PV_old * (1. - S_old);
@@ -325,20 +269,14 @@ namespace porofrac
     double
     TwoPhaseSolver<dim>::slope(const RockType &rock, const double pc) const
     {
-      // With entry_slope, the Jacobian uses the entry slope S'(0+) where p_c <= 0 (an inexact
-      // Newton that lets an absent phase enter); the residual is unchanged.
-      if (pc <= 0 && (parameters.capillary_bound || (parameters.entry_slope && entry_slope_active)))
-        return rock.saturation.derivative(
-          1e-12 * pressure_scale(&rock == &rocks[0] ? matrix_rock : fracture_rock));
-      return rock.saturation.derivative(pc);
-    }
-
-    template <int dim>
-    double
-    TwoPhaseSolver<dim>::pressure_scale(const Rock rock) const
-    {
-      const SaturationLaw &law = rocks[rock].saturation;
-      return law.type == SaturationLaw::Type::corey ? law.R : law.P_r;
+      // With entry_slope, the Jacobian uses the entry slope S'(p_e+) where p_c <= p_e (an
+      // inexact Newton that lets an absent phase enter); the residual is unchanged.
+      const SaturationLaw &law = *rock.saturation;
+      const double         p_e = law.entry_pressure();
+      if (pc <= p_e &&
+          (parameters.capillary_bound || (parameters.entry_slope && entry_slope_active)))
+        return law.derivative(p_e + 1e-12 * law.pressure_scale());
+      return law.derivative(pc);
     }
 
     template <int dim>
@@ -423,6 +361,50 @@ namespace porofrac
     }
 
     template <int dim>
+    double
+    TwoPhaseSolver<dim>::limit_capillary_change(const unsigned int i,
+                                                const double       pc_old,
+                                                double             dpc) const
+    {
+      // Appleyard-type chop: the capillary pressure of a node changes by at most capillary_chop
+      // times the pressure scale of its saturation law per iteration. Interface nodes carry both
+      // laws (matrix on the cell side): the larger scale.
+      const bool           interface = grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface;
+      const SaturationLaw &law       = *rocks[grid.nodes[i].rock].saturation;
+      const double scale = interface ? std::max(rocks[matrix_rock].saturation->pressure_scale(),
+                                                rocks[fracture_rock].saturation->pressure_scale()) :
+                                       law.pressure_scale();
+      const double lim   = parameters.capillary_chop * scale;
+      if (lim > 0 && std::abs(dpc) > lim)
+        dpc = dpc > 0 ? lim : -lim;
+      // Stop at the kink of S at p_c = p_e when leaving the two-phase region.
+      const double p_e = law.entry_pressure();
+      if (parameters.kink_stop && pc_old > p_e && pc_old + dpc < p_e)
+        dpc = -(pc_old - p_e);
+      // Entering: the entry-slope linearization is about p_c = p_e, so a node with p_c < p_e that
+      // the Newton step pushes up starts from the kink.
+      if (parameters.entry_slope && pc_old < p_e && dpc > 0)
+        dpc -= pc_old - p_e;
+      // Bound: p_c >= p_e (the non-wetting pressure of a saturated node is p^w + p_e).
+      if (parameters.capillary_bound && pc_old + dpc < p_e)
+        dpc = -(pc_old - p_e);
+      // Saturation chop: |Delta S| <= saturation_chop under the node's law (both laws at
+      // interface nodes, whose matrix-side mobility uses the matrix law).
+      if (parameters.saturation_chop > 0)
+        {
+          double pc_new = pc_old + dpc;
+          for (unsigned int r = 0; r < 2; ++r)
+            if (interface || r == grid.nodes[i].rock)
+              pc_new = limit_saturation_change(*rocks[r].saturation,
+                                               pc_old,
+                                               pc_new,
+                                               parameters.saturation_chop);
+          dpc = pc_new - pc_old;
+        }
+      return dpc;
+    }
+
+    template <int dim>
     StepResult
     TwoPhaseSolver<dim>::solve_time_step(const double dt, ConditionalOStream &verbose)
     {
@@ -436,7 +418,9 @@ namespace porofrac
       if (parameters.capillary_bound)
         for (unsigned int i = 0; i < grid.n_nodes(); ++i)
           if (!grid.is_dirichlet(i))
-            state[i][1] = std::max(state[i][1], state[i][0]);
+            state[i][1] =
+              std::max(state[i][1],
+                       state[i][0] + rocks[grid.nodes[i].rock].saturation->entry_pressure());
       for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
         {
           // A non-finite state (initial guess or diverged update) is a failed step.
@@ -530,24 +514,23 @@ namespace porofrac
           {
             std::unique_ptr<TimerOutput::Scope> t;
             if (timer)
-              t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: linear solve (UMFPACK)");
+              t = std::make_unique<TimerOutput::Scope>(*timer,
+                                                       "Flow: linear solve (" +
+                                                         linear_solver->name() + ")");
             // A singular or failed factorisation is a failed step (converged = false), never
             // an exception: the caller cuts the time step.
             try
               {
-                lu->factorize(jacobian);
-                update = residual;
-                lu->solve(update);
+                linear_solver->initialize(jacobian);
+                linear_solver->solve(residual, update, parameters.linear_tolerance);
               }
-            catch (...)
+            catch (const SolverFailure &e)
               {
-                result.failure = "singular Jacobian (UMFPACK failed)";
+                result.failure = "linear solver failed (" + std::string(e.what()) + ")";
                 return result;
               }
           }
-          const State previous = parameters.line_search ? state : State();
-          // Appleyard-type chop: the capillary pressure of a node changes by at most
-          // capillary_chop times the pressure scale of its saturation law per iteration.
+          const State  previous = parameters.line_search ? state : State();
           double       p_max = 0, du_max = 0;
           unsigned int argmax = 0, n_kink_crossings = 0, n_chopped = 0;
           for (unsigned int i = 0; i < grid.n_nodes(); ++i)
@@ -555,44 +538,12 @@ namespace porofrac
               {
                 const std::array<double, 2> dp     = {{-update(dof(i, 0)), -update(dof(i, 1))}};
                 const double                pc_old = state[i][1] - state[i][0];
-                double                      dpc    = dp[1] - dp[0];
-                // Interface nodes carry both laws (matrix on the cell side): use the larger scale.
-                const bool   interface = grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface;
-                const double scale =
-                  interface ? std::max(pressure_scale(matrix_rock), pressure_scale(fracture_rock)) :
-                              pressure_scale(grid.nodes[i].rock);
-                const double lim = parameters.capillary_chop * scale;
-                if (lim > 0 && std::abs(dpc) > lim)
-                  dpc = dpc > 0 ? lim : -lim;
-                // Stop at the kink of S at p_c = 0 when leaving the two-phase region.
-                if (parameters.kink_stop && pc_old > 0 && pc_old + dpc < 0)
-                  dpc = -pc_old;
-                // Entering: the entry-slope linearization is about p_c = 0, so a node with
-                // p_c < 0 that the Newton step pushes up starts from the kink.
-                if (parameters.entry_slope && pc_old < 0 && dpc > 0)
-                  dpc -= pc_old;
-                // Bound: p_c >= 0 (the non-wetting pressure of a saturated node is the wetting
-                // one).
-                if (parameters.capillary_bound && pc_old + dpc < 0)
-                  dpc = -pc_old;
-                // Saturation chop: |Delta S| <= saturation_chop under the node's law (both laws
-                // at interface nodes, whose matrix-side mobility uses the matrix law).
-                if (parameters.saturation_chop > 0)
-                  {
-                    double pc_new = pc_old + dpc;
-                    for (unsigned int r = 0; r < 2; ++r)
-                      if (interface || r == grid.nodes[i].rock)
-                        pc_new = limit_saturation_change(rocks[r].saturation,
-                                                         pc_old,
-                                                         pc_new,
-                                                         parameters.saturation_chop);
-                    dpc = pc_new - pc_old;
-                  }
+                const double                dpc = limit_capillary_change(i, pc_old, dp[1] - dp[0]);
                 // Keep the update of the phase that fills most of the node's pores (the one
                 // whose pressure the fluxes determine best); the other follows from p_c.
-                const bool nw_dominant =
-                  rocks[grid.nodes[i].rock].saturation.saturation(pc_old) > 0.5;
-                const double dpw = nw_dominant ? dp[1] - dpc : dp[0];
+                const SaturationLaw &law         = *rocks[grid.nodes[i].rock].saturation;
+                const bool           nw_dominant = law.saturation(pc_old) > 0.5;
+                const double         dpw         = nw_dominant ? dp[1] - dpc : dp[0];
                 state[i][0] += dpw;
                 state[i][1] += dpw + dpc;
                 for (unsigned int phase = 0; phase < 2; ++phase)
@@ -603,7 +554,8 @@ namespace porofrac
                     du_max = du;
                     argmax = i;
                   }
-                if ((pc_old > 0) != (pc_old + dpc > 0))
+                const double p_e = law.entry_pressure();
+                if ((pc_old > p_e) != (pc_old + dpc > p_e))
                   ++n_kink_crossings;
                 if (std::abs(dpc - (dp[1] - dp[0])) > 1e-12 * std::abs(dp[1] - dp[0]))
                   ++n_chopped;
@@ -618,7 +570,7 @@ namespace porofrac
                     << kinds[static_cast<int>(grid.nodes[argmax].kind)] << " node " << argmax
                     << " (p_c = " << pc
                     << ", S = " << saturation(state, argmax, grid.nodes[argmax].rock) << "), "
-                    << n_kink_crossings << " nodes crossed p_c = 0, " << n_chopped << " chopped"
+                    << n_kink_crossings << " nodes crossed p_c = p_e, " << n_chopped << " chopped"
                     << std::endl;
           }
           if (!std::isfinite(last_update))

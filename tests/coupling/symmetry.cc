@@ -37,6 +37,7 @@
 #include <porofrac/coupling/parameters.h>
 #include <porofrac/coupling/poromechanics.h>
 #include <porofrac/flow/model.h>
+#include <porofrac/flow/parameters.h>
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/io/deck.h>
 #include <porofrac/mechanics/contact_problem.h>
@@ -152,14 +153,17 @@ main(int argc, char **argv)
   coupling::CouplingParameters coupling_parameters;
   coupling_parameters.parse_parameters(prm);
   // As coupling::run_scene: tight inner flow solves.
-  flow::FlowModel<2> flow = flow::make_flow_model<2>(prm, mesh, [&](flow::NewtonParameters &n) {
-    n.stagnation_update_tolerance = n.update_tolerance;
-    n.stagnation_mass_tolerance   = 1e-10;
-    n.residual_tolerance =
-      std::min(n.residual_tolerance, coupling_parameters.inner_flow_residual_tolerance);
-    n.update_tolerance =
-      std::min(n.update_tolerance, coupling_parameters.inner_flow_update_tolerance);
-  });
+  flow::FlowParameters flow_parameters;
+  flow_parameters.parse_parameters(prm);
+  flow::FlowModel<2> flow =
+    flow::make_flow_model<2>(flow_parameters, mesh, [&](flow::NewtonParameters &n) {
+      n.stagnation_update_tolerance = n.update_tolerance;
+      n.stagnation_mass_tolerance   = 1e-10;
+      n.residual_tolerance =
+        std::min(n.residual_tolerance, coupling_parameters.inner_flow_residual_tolerance);
+      n.update_tolerance =
+        std::min(n.update_tolerance, coupling_parameters.inner_flow_update_tolerance);
+    });
   mechanics::ContactParameters mechanics_parameters;
   mechanics_parameters.parse_parameters(prm, 2);
   mechanics::ContactProblem<2> mech(mesh, mechanics_parameters, quiet, timer);

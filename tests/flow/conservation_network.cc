@@ -21,8 +21,8 @@ main()
   const auto rocks = flow_test::corey_rocks();
   // Tight Newton tolerances, so that the node balances are checked to round-off.
   flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
-  const double            pc_in_m = rocks[0].saturation.inverse(0.5, "test");
-  const double            pc_in_f = rocks[1].saturation.inverse(0.9, "test");
+  const double            pc_in_m = rocks[0].saturation->inverse(0.5, "test");
+  const double            pc_in_f = rocks[1].saturation->inverse(0.9, "test");
   solver.matrix_dirichlet         = {{0, {{2e5 - pc_in_m, 2e5}}}, {1, {{1e5, 1e5}}}};
   solver.fracture_dirichlet       = {{0, {{2e5 - pc_in_f, 2e5}}}};
   for (auto &p : solver.state)
@@ -51,11 +51,11 @@ main()
             const double       delta = solver.state[c.a][phase] - solver.state[c.b][phase];
             const unsigned int up    = delta >= 0 ? c.a : c.b;
             const auto        &rock  = rocks[delta >= 0 ? c.rock_a : c.rock_b];
-            const double       F =
-              c.transmissibility *
-              rock.mobility(phase,
-                            rock.saturation.saturation(solver.state[up][1] - solver.state[up][0])) *
-              delta;
+            const double       F     = c.transmissibility *
+                             rock.mobility(phase,
+                                           rock.saturation->saturation(solver.state[up][1] -
+                                                                       solver.state[up][0])) *
+                             delta;
             sum[c.a][phase] += F;
             sum[c.b][phase] -= F;
             big[c.a][phase] = std::max(big[c.a][phase], std::abs(F));

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The coupling API of TwoPhaseSolver (issue 4 / coupled issue):
+// The coupling API of TwoPhaseSolver:
 // 1. energy_exchange: single-phase linear flow (p = 2e5 - 1e5 x, no Dirichlet-to-Dirichlet
 //    connections) supplies the boundary work dt Q (p_in - p_out), Q = (K/mu + d_f^3/(12 mu)) dp;
 //    the dissipation over interior connections is positive and smaller.
 // 2. Discrete energy identity of a closed network (no Dirichlet node) with Biot storage:
-//    sum_i sum_alpha p^alpha_i ((PV s^alpha)_i - (PV_old s^alpha_old)_i) + dissipation = 0.
-// 3. Mass conservation when the aperture and porosity_base change between steps
+//    sum_i sum_alpha p^alpha_i ((PV s^alpha)_i - (PV_old s^alpha_old)_i) + dissipation = 0
+//    (Biot storage of eq. (11d): coupling::BiotStorage as the solver's storage model).
+// 3. Mass conservation when the aperture and the displacement porosity change between steps
 //    (begin_time_step() stores the old pore volumes): per-step mass defect below 1e-10.
 // 4. A failed step returns converged = false (non-finite state), without an exception.
+#include <porofrac/coupling/biot_storage.h>
+
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -55,7 +58,8 @@ main()
     flow_test::set_data(grid);
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
     std::vector<double>     phi_base(grid.n_matrix_cells, 0.2), p_E_ref(grid.n_matrix_cells, 1e5);
-    solver.set_biot_storage(phi_base, p_E_ref, 1e-7, true);
+    solver.set_storage_model(std::make_shared<coupling::BiotStorage<2>>(
+      grid, rocks[flow::matrix_rock].saturation, 1e-7, true, p_E_ref, phi_base));
     // Gas (p_c = 2e4 Pa) in the left quarter, water elsewhere.
     for (unsigned int i = 0; i < grid.n_nodes(); ++i)
       solver.state[i] = grid.nodes[i].centre[0] < 0.25 ? std::array<double, 2>{{1e5, 1.2e5}} :
@@ -94,14 +98,16 @@ main()
     flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0});
     flow_test::set_data(grid);
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
-    const double            pc_in = rocks[0].saturation.inverse(0.5, "test");
+    const double            pc_in = rocks[0].saturation->inverse(0.5, "test");
     solver.matrix_dirichlet       = {{0, {{2e5 - pc_in, 2e5}}}, {1, {{1e5, 1e5}}}};
-    solver.fracture_dirichlet     = {{0, {{2e5 - rocks[1].saturation.inverse(0.9, "test"), 2e5}}}};
+    solver.fracture_dirichlet     = {{0, {{2e5 - rocks[1].saturation->inverse(0.9, "test"), 2e5}}}};
     for (auto &p : solver.state)
       p = {{1e5, 1e5}};
     solver.apply_dirichlet(solver.state);
     std::vector<double> phi_base(grid.n_matrix_cells, 0.2), p_E_ref(grid.n_matrix_cells, 1e5);
-    solver.set_biot_storage(phi_base, p_E_ref, 1e-7, false);
+    const auto          storage = std::make_shared<coupling::BiotStorage<2>>(
+      grid, rocks[flow::matrix_rock].saturation, 1e-7, false, p_E_ref, phi_base);
+    solver.set_storage_model(storage);
     double mass_max  = 0;
     bool   converged = true;
     for (unsigned int step = 0; step < 5; ++step)
@@ -113,7 +119,7 @@ main()
         grid.update_transmissibilities();
         for (auto &phi : phi_base)
           phi += 0.002;
-        solver.set_porosity_base(phi_base);
+        storage->set_displacement_porosity(phi_base);
         const auto r = solver.solve_time_step(20., quiet);
         converged    = converged && r.converged;
         mass_max     = std::max({mass_max, r.mass_defect[0], r.mass_defect[1]});

@@ -3,7 +3,8 @@
 #ifndef POROFRAC_TESTS_FLOW_TOOLS_H
 #define POROFRAC_TESTS_FLOW_TOOLS_H
 
-#include <porofrac/flow/laws.h>
+#include <porofrac/flow/parameters.h>
+#include <porofrac/flow/rock_type.h>
 #include <porofrac/flow/tpfa_grid.h>
 #include <porofrac/flow/two_phase_solver.h>
 #include <porofrac/geometry/cut_mesh.h>
@@ -58,11 +59,11 @@ namespace flow_test
   corey_rocks()
   {
     std::array<flow::RockType, 2> rocks;
-    rocks[0].saturation = flow::SaturationLaw::corey(1e4);
-    rocks[1].saturation = flow::SaturationLaw::corey(1e3);
+    rocks[0].saturation = flow::make_saturation_law("corey", {{"Corey R", "1e4"}});
+    rocks[1].saturation = flow::make_saturation_law("corey", {{"Corey R", "1e3"}});
     for (auto &r : rocks)
       {
-        r.relative_permeability = flow::RelativePermeability::linear();
+        r.relative_permeability = flow::make_relative_permeability("linear");
         r.viscosity[0]          = 1e-3;
         r.viscosity[1]          = 1e-4;
       }

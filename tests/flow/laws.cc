@@ -1,42 +1,26 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Flow laws: Corey and van Genuchten saturations, capillary energy U against an independent
 // quadrature of int_0^pc q S'(q) dq, derivatives against centred finite differences, van
-// Genuchten-Mualem and linear relative permeabilities, Kozeny-Carman, and bad-input errors.
+// Genuchten-Mualem and linear relative permeabilities (the registered laws, built as a deck would
+// build them), Kozeny-Carman (coupling/closure.h), and bad-input errors.
 // Every check prints "ok" or the failing values.
 #include <porofrac/base/exceptions.h>
-#include <porofrac/flow/laws.h>
+#include <porofrac/coupling/closure.h>
+#include <porofrac/flow/parameters.h>
+#include <porofrac/flow/rock_type.h>
 
 #include <cmath>
 #include <functional>
 #include <iostream>
 
+#include "law_test_tools.h"
+
 using namespace porofrac;
 using namespace porofrac::flow;
+using namespace law_test;
 
 namespace
 {
-  unsigned int failures = 0;
-
-  void
-  check(const std::string &what, const double value, const double expected, const double tol)
-  {
-    const double err = std::abs(value - expected) / std::max(1., std::abs(expected));
-    if (err <= tol)
-      std::cout << "ok: " << what << std::endl;
-    else
-      {
-        ++failures;
-        std::cout << "FAILED: " << what << " value " << value << " expected " << expected
-                  << std::endl;
-      }
-  }
-
-  double
-  fd(const std::function<double(double)> &f, const double x, const double h)
-  {
-    return (f(x + h) - f(x - h)) / (2 * h);
-  }
-
   // Independent midpoint-rule quadrature of U = int_0^pc q S'(q) dq with 2e5 intervals.
   double
   energy_quadrature(const SaturationLaw &law, const double pc)
@@ -50,29 +34,17 @@ namespace
       }
     return U;
   }
-
-  template <typename F>
-  void
-  expect_error(const std::string &what, F f)
-  {
-    try
-      {
-        f();
-        ++failures;
-        std::cout << "FAILED: no error for " << what << std::endl;
-      }
-    catch (const InputError &e)
-      {
-        std::cout << "error (" << what << "): " << e.what() << std::endl;
-      }
-  }
 } // namespace
 
 int
 main()
 {
-  const SaturationLaw corey = SaturationLaw::corey(2e8);
-  const SaturationLaw vg    = SaturationLaw::van_genuchten(1.5e7, 1.49);
+  const auto corey_law = make_saturation_law("corey", {{"Corey R", "2e8"}});
+  const auto vg_law =
+    make_saturation_law("van genuchten",
+                        {{"van Genuchten P_r", "1.5e7"}, {"van Genuchten n", "1.49"}});
+  const SaturationLaw &corey = *corey_law;
+  const SaturationLaw &vg    = *vg_law;
   // Corey saturation, closed form at p_c = R: 1 - 1/e
   check("Corey S(R)", corey.saturation(2e8), 1. - std::exp(-1.), 1e-14);
   check("Corey S(-1) = 0", corey.saturation(-1.), 0., 0);
@@ -100,12 +72,16 @@ main()
     }
   // Fracture Corey law of 5.3: p_c for s = 1 - 1e-8 (specs.md 1.2).
   check("Corey fracture inverse",
-        SaturationLaw::corey(1e2).inverse(1 - 1e-8, "x"),
+        make_saturation_law("corey", {{"Corey R", "1e2"}}, fracture_rock)->inverse(1 - 1e-8, "x"),
         1842.068,
         1e-6 * 1842);
 
-  const RelativePermeability vgm = RelativePermeability::van_genuchten_mualem(0.328, 0.35, 0.);
-  const RelativePermeability lin = RelativePermeability::linear();
+  const auto vgm_law =
+    make_relative_permeability("van genuchten-mualem",
+                               {{"Mualem q", "0.328"}, {"S_lr", "0.35"}, {"S_gr", "0"}});
+  const auto                  lin_law = make_relative_permeability("linear");
+  const RelativePermeability &vgm     = *vgm_law;
+  const RelativePermeability &lin     = *lin_law;
   check("VGM k_rw(s_w = 1) = 1", vgm.value(0, 0.), 1., 1e-14);
   check("VGM k_rw(s_w = S_lr) = 0", vgm.value(0, 0.65), 0., 1e-14);
   check("VGM k_rnw(s_w = S_lr) = 1", vgm.value(1, 0.65), 1., 1e-14);
@@ -134,25 +110,27 @@ main()
               fd([&](double x) { return lin.value(phase, x); }, snw, 1e-7),
               1e-8);
       }
-  check("Kozeny-Carman at phi0 = K0", kozeny_carman(5e-20, 0.15, 0.15) * 1e20, 5., 1e-14);
+  check("Kozeny-Carman at phi0 = K0", coupling::kozeny_carman(5e-20, 0.15, 0.15) * 1e20, 5., 1e-14);
   check("Kozeny-Carman derivative FD",
-        kozeny_carman_derivative(5e-20, 0.15, 0.2) * 1e20,
-        fd([](double x) { return kozeny_carman(5e-20, 0.15, x) * 1e20; }, 0.2, 1e-6),
+        coupling::kozeny_carman_derivative(5e-20, 0.15, 0.2) * 1e20,
+        fd([](double x) { return coupling::kozeny_carman(5e-20, 0.15, x) * 1e20; }, 0.2, 1e-6),
         1e-7);
 
   RockType rock;
-  rock.relative_permeability = vgm;
+  rock.relative_permeability = vgm_law;
   rock.viscosity[1]          = 1.851e-5;
   check("mobility nw = k_r/mu", rock.mobility(1, 0.3), vgm.value(1, 0.3) / 1.851e-5, 1e-14);
 
-  expect_error("S_lr + S_gr >= 1",
-               [] { RelativePermeability::van_genuchten_mualem(0.3, 0.6, 0.4, "Flow/Matrix"); });
+  expect_error("S_lr + S_gr >= 1", [] {
+    make_relative_permeability("van genuchten-mualem",
+                               {{"Mualem q", "0.3"}, {"S_lr", "0.6"}, {"S_gr", "0.4"}});
+  });
   expect_error("zero viscosity", [] {
     RockType r;
     r.viscosity[0] = 0.;
-    r.validate("Flow/Matrix");
+    r.validate("Flow/Matrix", "Flow/Matrix");
   });
-  expect_error("negative R", [] { SaturationLaw::corey(-1., "Flow/Matrix/Corey R"); });
+  expect_error("negative R", [] { make_saturation_law("corey", {{"Corey R", "-1"}}); });
   expect_error("saturation outside [0,1]",
                [&] { corey.inverse(1.2, "Flow/Boundary conditions/Matrix"); });
 

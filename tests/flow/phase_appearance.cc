@@ -48,7 +48,7 @@ namespace
     newton.line_search           = new_options;
     flow::TwoPhaseSolver<2> solver(grid, rocks, newton);
     solver.reference_pressure = reference;
-    const double pc_in        = rocks[0].saturation.inverse(0.5, "test");
+    const double pc_in        = rocks[0].saturation->inverse(0.5, "test");
     solver.matrix_dirichlet   = {{0, {{2e5 - pc_in, 2e5}}}, {1, {{1e5, 1e5}}}};
     for (auto &p : solver.state)
       p = {{1e5 - reference, 1e5 - reference}};

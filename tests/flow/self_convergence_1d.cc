@@ -30,6 +30,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -108,8 +109,10 @@ namespace
     std::array<flow::RockType, 2> rocks;
     for (auto &r : rocks)
       {
-        r.saturation            = flow::SaturationLaw::corey(env("R", 1e5));
-        r.relative_permeability = flow::RelativePermeability::linear();
+        std::ostringstream R;
+        R << std::setprecision(17) << env("R", 1e5);
+        r.saturation            = flow::make_saturation_law("corey", {{"Corey R", R.str()}});
+        r.relative_permeability = flow::make_relative_permeability("linear");
         r.viscosity[0]          = 1e-3;
         r.viscosity[1]          = env("MU_NW", 5e-4);
       }
@@ -118,8 +121,8 @@ namespace
     newton.update_tolerance   = env("UTOL", 1e-12);
     flow::TwoPhaseSolver<2> solver(grid, rocks, newton);
 
-    const double pc_in   = rocks[0].saturation.inverse(0.8, "test");
-    const double pc_init = rocks[0].saturation.inverse(0.1, "test");
+    const double pc_in   = rocks[0].saturation->inverse(0.8, "test");
+    const double pc_init = rocks[0].saturation->inverse(0.1, "test");
     const double p_in = env("P_IN", 3e5), p_out = 1e5;
     solver.matrix_dirichlet = {{0, {{p_in - pc_in, p_in}}}, {1, {{p_out, p_out + pc_init}}}};
     for (auto &p : solver.state)

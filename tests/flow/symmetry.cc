@@ -31,7 +31,7 @@ namespace
     flow_test::set_data(grid);
     const auto              rocks = flow_test::corey_rocks();
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
-    const double            pc_in = rocks[0].saturation.inverse(0.5, "test");
+    const double            pc_in = rocks[0].saturation->inverse(0.5, "test");
     solver.matrix_dirichlet       = {{inlet, {{2e5 - pc_in, 2e5}}}, {outlet, {{1e5, 1e5}}}};
     for (auto &p : solver.state)
       p = {{1e5, 1e5}};

@@ -7,12 +7,14 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <porofrac/coupling/biot_storage.h>
 #include <porofrac/coupling/newton_krylov.h>
 #include <porofrac/coupling/parameters.h>
 #include <porofrac/flow/model.h>
 #include <porofrac/mechanics/contact_problem.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -148,13 +150,18 @@ namespace porofrac
       /// p_E per matrix cell and fracture cell of the current flow state (11d).
       Vector<double>
       flow_equivalent_pressure() const;
+      /// Porosity (11d) of matrix cell @p K in the current flow state.
+      double
+      matrix_porosity(const unsigned int K) const;
       void
       compute_step_energy_terms();
 
       const CouplingParameters parameters;
-      ConditionalOStream      &verbose;
-      TimerOutput             &timer;
-      const unsigned int       n_matrix, n_fracture;
+      /// The flow's matrix pore volumes: the Biot storage of (11d) (set by initialize()).
+      std::shared_ptr<BiotStorage<dim>> storage;
+      ConditionalOStream               &verbose;
+      TimerOutput                      &timer;
+      const unsigned int                n_matrix, n_fracture;
 
       double         dt = 0;
       Vector<double> p_E;     ///< current (matrix cells, then fracture faces)

@@ -2,9 +2,8 @@
 #ifndef POROFRAC_FLOW_MODEL_H
 #define POROFRAC_FLOW_MODEL_H
 
-#include <deal.II/base/parameter_handler.h>
-
-#include <porofrac/flow/laws.h>
+#include <porofrac/flow/parameters.h>
+#include <porofrac/flow/rock_type.h>
 #include <porofrac/flow/tpfa_grid.h>
 #include <porofrac/flow/two_phase_solver.h>
 #include <porofrac/geometry/cut_mesh.h>
@@ -17,21 +16,10 @@ namespace porofrac
 {
   namespace flow
   {
-    /// Time stepping of deck subsection "Flow": dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max).
-    struct TimeStepping
-    {
-      double       final_time   = 1;
-      double       initial_step = 1;
-      double       maximum_step = 1;
-      double       growth       = 1.1;
-      unsigned int maximum_cuts = 20;
-      unsigned int output_every = 1;
-    };
-
     /**
-     * Everything a scene needs to run two-phase flow on a cut mesh, built from deck subsection
-     * "Flow": the two rock types, the TPFA grid with the initial porosity, permeability and
-     * aperture, the Newton solver with its Dirichlet data and the initial state.
+     * Everything a scene needs to run two-phase flow on a cut mesh, built from FlowParameters:
+     * the two rock types, the TPFA grid with the initial porosity, permeability and aperture,
+     * the Newton solver with its Dirichlet data and the initial state.
      */
     template <int dim>
     struct FlowModel
@@ -47,13 +35,14 @@ namespace porofrac
     };
 
     /**
-     * Reads and validates subsection "Flow" and builds the model on @p mesh. @p adjust_newton,
-     * if given, may change the Newton settings read from the deck before the solver is built
-     * (coupled scenes tighten the tolerances).
+     * Builds the model of @p parameters on @p mesh, with the checks that need the mesh:
+     * Dirichlet boundary ids on the mesh, source expressions of x, y (, z) finite at the cell
+     * centres (InputErrors naming the parameter). @p adjust_newton, if given, may change the
+     * Newton settings before the solver is built (coupled scenes tighten the tolerances).
      */
     template <int dim>
     FlowModel<dim>
-    make_flow_model(const dealii::ParameterHandler                &prm,
+    make_flow_model(const FlowParameters                          &parameters,
                     const geometry::CutMesh<dim>                  &mesh,
                     const std::function<void(NewtonParameters &)> &adjust_newton = {});
   } // namespace flow

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <porofrac/flow/rock_type.h>
 #include <porofrac/geometry/cut_mesh.h>
 
 #include <set>
@@ -15,16 +16,9 @@ namespace porofrac
   {
     using namespace dealii;
 
-    /// Rock types: 0 = matrix, 1 = fracture (also the rock of the interface layer, as in 5.3).
-    enum Rock : unsigned int
-    {
-      matrix_rock   = 0,
-      fracture_rock = 1
-    };
-
     /**
-     * Two-point flux connectivity of the hybrid-dimensional model (paper Section 4.1, Fig. 5;
-     * specs.md 3b), as a graph of flow nodes joined by two-point connections:
+     * Two-point flux connectivity of the hybrid-dimensional model (paper Section 4.1, Fig. 5),
+     * as a graph of flow nodes joined by two-point connections:
      *
      * - matrix cells (centre = circumcentre), numbered like active_cell_index();
      * - fracture cells, one per fracture face sigma (measure |sigma| d_f), numbered after them;
@@ -44,9 +38,10 @@ namespace porofrac
      * - fracture-fracture through a node s with two faces: harmonic mean of the half
      *   transmissibilities (d_f^3/12) |s| / dist(x_sigma, s); three or more faces, or a Dirichlet
      *   node: one half transmissibility per face to the node.
-     * With `axisymmetric`, measures carry the weight 2 pi r with r = the second coordinate
-     * (specs.md 1.4). Fracture-fracture connections are built in 2D only (3D fractures would
-     * need connections through fracture edges).
+     * With `axisymmetric`, measures carry the weight 2 pi r with r = the second coordinate.
+     * Fracture-fracture connections exist in 2D only (3D fractures would need connections
+     * through fracture edges): a 3D mesh with fracture faces is an InputError, a 3D mesh without
+     * fractures is fine.
      */
     template <int dim>
     class TpfaGrid
@@ -121,7 +116,7 @@ namespace porofrac
                nodes[i].kind == NodeKind::dirichlet_fracture;
       }
 
-      /// Damaged layer on each side of a fracture (specs.md 3b): thickness d_a (m) and porosity
+      /// Damaged layer on each side of a fracture: thickness d_a (m) and porosity
       /// phi_a; its saturation law is the fracture's (rock a = f, as in 5.3). 0 = massless
       /// interface nodes.
       double damaged_layer_thickness = 0, damaged_layer_porosity = 0;

@@ -9,8 +9,10 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <porofrac/base/sparse_lu.h>
-#include <porofrac/flow/laws.h>
+#include <porofrac/base/linear_solver.h>
+#include <porofrac/flow/parameters.h>
+#include <porofrac/flow/rock_type.h>
+#include <porofrac/flow/storage_model.h>
 #include <porofrac/flow/tpfa_grid.h>
 
 #include <array>
@@ -23,48 +25,6 @@ namespace porofrac
 {
   namespace flow
   {
-    /// Stopping rules of the flow Newton method (specs.md 1.1).
-    struct NewtonParameters
-    {
-      unsigned int max_iterations = 50;
-      /// Stop when ||R||_2 / ||R_0||_2 < residual_tolerance ...
-      double residual_tolerance = 1e-5;
-      /// ... or max |delta p| / max |p| < update_tolerance ...
-      double update_tolerance = 1e-4;
-      /// ... and, in both cases, the relative mass defect of each phase < mass_tolerance.
-      double mass_tolerance = 1e-11;
-      /// Largest change of a node's capillary pressure per iteration, in units of the pressure
-      /// scale (R or P_r) of its rock's saturation law; 0 = no limit.
-      double capillary_chop = 1.;
-      /// Largest change of a node's non-wetting saturation per iteration (Appleyard chop); at
-      /// interface nodes under both the matrix and the fracture law. 0 = no limit.
-      double saturation_chop = 0.;
-      /// Jacobian only: use the entry slope S'(0+) instead of 0 where p_c <= 0 (inexact Newton
-      /// across the kink of S at p_c = 0). false = exact analytic Jacobian.
-      bool entry_slope = true;
-      /// Number of Newton iterations per step that use the entry slope.
-      unsigned int entry_slope_iterations = 1000;
-      /// Give up (so that the caller cuts the time step) after this many iterations in which
-      /// neither the residual nor the mass defect fell below half its best value; 0 = never.
-      unsigned int stagnation_iterations = 10;
-      /// If positive, a stagnated solve whose last normalized update is below this value and
-      /// whose mass defect meets mass_tolerance counts as converged (inner solves of a coupling
-      /// loop ask for tighter tolerances than Newton's noise floor allows).
-      double stagnation_update_tolerance = 0.;
-      /// Mass-defect bound of that fallback (0: mass_tolerance).
-      double stagnation_mass_tolerance = 0.;
-      /// Newton: a node leaving the two-phase region (p_c > 0 to p_c < 0) stops at p_c = 0 first.
-      bool kink_stop = true;
-      /// Keep p_c >= 0 at every node (projection after each update; the Jacobian uses S'(0+) at
-      /// the bound). With zero-entry-pressure laws S = 0 for p_c <= 0, so with no non-wetting
-      /// mobility floor the bound does not change the solution: it removes the non-wetting
-      /// pressure of a saturated node, which no equation determines, from the Newton iteration.
-      bool capillary_bound = false;
-      /// Backtracking: halve the update (at most line_search_steps times) while |R| grows.
-      bool         line_search       = false;
-      unsigned int line_search_steps = 4;
-    };
-
     /// Energy exchanged by the flow over one time step (coupled energy estimate, paper
     /// Section 4.2).
     struct EnergyExchange
@@ -90,10 +50,10 @@ namespace porofrac
     };
 
     /**
-     * Implicit Euler, fully coupled two-phase TPFA (paper scheme (11a), specs.md 3b), with the
-     * phase pressures (p^w, p^nw) of every non-Dirichlet flow node as unknowns, S^nw = S_rock(p^nw
-     * - p^w), phase-potential upwinding of the mobilities, and Newton's method with the analytic
-     * Jacobian and UMFPACK.
+     * Implicit Euler, fully coupled two-phase TPFA (paper scheme (11a)), with the phase
+     * pressures (p^w, p^nw) of every non-Dirichlet flow node as unknowns, S^nw = S_rock(p^nw -
+     * p^w), phase-potential upwinding of the mobilities, and Newton's method with the analytic
+     * Jacobian and a registered linear solver (NewtonParameters::linear_solver).
      *
      * Interface and intersection unknowns are solved monolithically with the cell unknowns (not
      * eliminated by a local solver); they are massless, so their rows are pure flux balances.
@@ -102,11 +62,9 @@ namespace porofrac
      *   PV_i(p_i) S^alpha_i - PV_i,old S^alpha_i,old + dt sum_c F^alpha_c = 0,
      *   F^alpha_c = T_c eta^alpha(S_up) (p^alpha_a - p^alpha_b), up = a if p^alpha_a >= p^alpha_b.
      * PV_i,old is the pore volume stored by begin_time_step(), so porosity and aperture may change
-     * between steps. The matrix pore volume is |K| phi_K with, after set_biot_storage(), the
-     * linearised Biot storage of eq. (11d):
-     *   phi_K = porosity_base_K + (p^E_K - p^E_ref,K) / M,
-     *   p^E = sum_alpha p^alpha s^alpha - U(p_c) (eq. (6); without U with capillary_energy = false,
-     *   Remark 3.1), which depends on the unknowns (residual and Jacobian include it).
+     * between steps. The pore volume of a matrix cell comes from the StorageModel
+     * (set_storage_model(); GridPorosity by default), which may depend on the cell's unknowns
+     * (the Biot storage of eq. (11d)): residual and Jacobian include that dependence.
      * Node numbering (TpfaGrid): matrix cell K is node K (active_cell_index); the fracture cell
      * of CutMesh fracture face f is node n_matrix_cells + f.
      */
@@ -157,44 +115,21 @@ namespace porofrac
       double
       saturation(const State &state, const unsigned int i, const Rock rock) const
       {
-        return rocks[rock].saturation.saturation(state[i][1] - state[i][0]);
+        return rocks[rock].saturation->saturation(state[i][1] - state[i][0]);
       }
 
       /// Start of a time step: old_state = state, and stores the pore volume of every node
-      /// (grid porosity or Biot porosity of old_state, current grid.aperture) as PV_old.
+      /// (the storage model's at old_state, the current grid.aperture) as PV_old.
       void
       begin_time_step();
 
-      /**
-       * Biot storage in matrix cells (eq. (11d)): phi_K = porosity_base[K] + (p^E_K -
-       * p_E_reference[K]) * inverse_biot_modulus, vectors per matrix cell (active_cell_index),
-       * p^E with the capillary energy U of the rock's law if @p capillary_energy (paper eq. (6)),
-       * else sum_alpha p^alpha s^alpha (Remark 3.1). Without a call, phi_K = grid.porosity[K].
-       * Takes effect for the pore volume of the current state; PV_old is the one stored by
-       * begin_time_step(). InputError("Flow/Biot modulus") for a negative or non-finite 1/M.
-       */
+      /// The pore volume law of the matrix cells (kept alive by the solver). Takes effect for the
+      /// pore volume of the current state; PV_old is the one stored by begin_time_step().
       void
-      set_biot_storage(const std::vector<double> &porosity_base,
-                       const std::vector<double> &p_E_reference,
-                       const double               inverse_biot_modulus,
-                       const bool                 capillary_energy);
+      set_storage_model(const std::shared_ptr<const StorageModel> &storage);
 
-      /// Replaces porosity_base (e.g. phi_0 + b div(u - u_0) from the mechanics), keeping the
-      /// reference p^E and 1/M of set_biot_storage() (without it: 1/M = 0).
-      void
-      set_porosity_base(const std::vector<double> &porosity_base);
-
-      /// Equivalent pressure p^E = sum_alpha p^alpha s^alpha - U(p_c) of node @p node (matrix
-      /// cell K = node K, fracture cell of fracture face f = node n_matrix_cells + f), with its
-      /// rock's law; without U if capillary_energy = false in set_biot_storage().
-      double
-      equivalent_pressure(const State &state, const unsigned int node) const;
-
-      /// Porosity phi_K of matrix cell @p K in @p state (see set_biot_storage()).
-      double
-      porosity(const State &state, const unsigned int K) const;
-
-      /// Pore volume of node @p i in @p state: |K| phi_K(state), |sigma| d_f (grid.aperture), or 0.
+      /// Pore volume of node @p i in @p state: the storage model's for a matrix cell, |sigma| d_f
+      /// (grid.aperture) for a fracture cell, the damaged layer's for an interface, or 0.
       double
       pore_volume(const State &state, const unsigned int i) const;
 
@@ -241,7 +176,7 @@ namespace porofrac
       /// of |R_0|: warm-started solves inside coupled iterations start next to the solution, so
       /// |R_0| is no scale for them (the coupler passes the residual of the step's old state).
       double residual_scale = 0;
-      /// Optional: times "Flow: assembly" and "Flow: linear solve (UMFPACK)".
+      /// Optional: times "Flow: assembly" and "Flow: linear solve (<linear solver name>)".
       TimerOutput *timer = nullptr;
 
       const TpfaGrid<dim>          &grid;
@@ -252,16 +187,12 @@ namespace porofrac
       SparseMatrix<double> jacobian;
 
     private:
-      /// LU of the Jacobian; keeps the symbolic analysis of the fixed sparsity pattern.
-      std::shared_ptr<SparseLU> lu;
-      std::vector<unsigned int> node_dof;
+      /// Solver of the Newton systems (it may keep set-up of the fixed sparsity pattern).
+      std::shared_ptr<SerialLinearSolver> linear_solver;
+      std::shared_ptr<const StorageModel> storage;
+      std::vector<unsigned int>           node_dof;
       /// Pore volume of every node at begin_time_step().
       std::vector<double> old_pore_volume;
-      /// Biot storage (set_biot_storage); biot = false: phi_K = grid.porosity[K].
-      bool                biot = false;
-      std::vector<double> porosity_base_, p_E_reference_;
-      double              inverse_biot_modulus_ = 0;
-      bool                capillary_energy_     = true;
       /// Pore volume of node i and its derivatives with respect to (p^w_i, p^nw_i).
       double
                    pore_volume(const State           &state,
@@ -270,8 +201,13 @@ namespace porofrac
       unsigned int n_free;
       double
       total_pore_volume() const;
+      /// The change @p dpc of node @p i's capillary pressure that Newton proposes, limited by the
+      /// capillary chop, the kink stop, the entry slope, the capillary bound and the saturation
+      /// chop (NewtonParameters).
       double
-      pressure_scale(const Rock rock) const;
+      limit_capillary_change(const unsigned int i, const double pc_old, double dpc) const;
+      /// dS/dp_c of @p rock's law in the Jacobian: S'(p_e+) for p_c <= p_e where the entry slope
+      /// or the capillary bound is on, else the exact S'(p_c).
       double
       slope(const RockType &rock, const double pc) const;
       /// The stagnation fallback of NewtonParameters: mass defect and normalized update small

@@ -1,0 +1,487 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/base/linear_solver.h>
+#include <porofrac/base/registry.h>
+#include <porofrac/flow/parameters.h>
+#include <porofrac/geometry/cut_mesh.h>
+
+#include <vector>
+
+namespace porofrac
+{
+  namespace flow
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      const char *rock_names[2] = {"Matrix", "Fracture"};
+
+      /// The rock whose entries declare_parameters() is declaring (see rock_default()).
+      Rock rock_being_declared = matrix_rock;
+
+      /// Laws, initial pressures and mobility floors of rock subsection Flow/<rock>.
+      void
+      declare_rock(ParameterHandler &prm, const Rock rock)
+      {
+        const bool matrix   = rock == matrix_rock;
+        rock_being_declared = rock;
+        prm.enter_subsection(rock_names[rock]);
+        const auto &saturation_laws = SaturationLawRegistry::instance();
+        prm.declare_entry("Saturation law",
+                          "corey",
+                          Patterns::Selection(saturation_laws.selection()),
+                          "S^nw(p_c) of this rock (paper eq. (1)); " +
+                            saturation_laws.documentation());
+        saturation_laws.declare_parameters(prm);
+        const auto &permeabilities = RelativePermeabilityRegistry::instance();
+        prm.declare_entry("Relative permeability",
+                          matrix ? "van genuchten-mualem" : "linear",
+                          Patterns::Selection(permeabilities.selection()),
+                          "k_r^alpha(s^nw) of this rock; " + permeabilities.documentation());
+        permeabilities.declare_parameters(prm);
+        prm.declare_entry("Mobility floor",
+                          "0",
+                          Patterns::Double(),
+                          "Added to k_r in the mobilities so that an absent phase keeps a "
+                          "well-posed pressure (-); 0 = exact laws.");
+        prm.declare_entry("Mobility floor nw",
+                          "-1",
+                          Patterns::Double(),
+                          "Floor of the non-wetting phase alone (-); negative: Mobility floor. "
+                          "With Capillary pressure bound the non-wetting floor should be 0.");
+        const std::string p0 = matrix ? "4e6" : "1e5";
+        prm.declare_entry("Initial pressure w",
+                          p0,
+                          Patterns::Double(),
+                          "Initial wetting pressure (Pa).");
+        prm.declare_entry("Initial pressure nw",
+                          p0,
+                          Patterns::Double(),
+                          "Initial non-wetting pressure (Pa).");
+        prm.leave_subsection();
+        rock_being_declared = matrix_rock;
+      }
+
+      void
+      declare_matrix_data(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Matrix");
+        prm.declare_entry("Porosity", "0.15", Patterns::Double(), "Initial porosity phi_0 (-).");
+        prm.declare_entry("Permeability",
+                          "5e-20",
+                          Patterns::Double(),
+                          "K_0 of the Kozeny-Carman law, K at phi_0 (m^2).");
+        prm.declare_entry("Source w",
+                          "0",
+                          Patterns::Anything(),
+                          "Wetting-phase source h^w of scheme (11a): volume of phase per bulk "
+                          "volume and second (1/s), muparser in x, y (, z); negative = sink.");
+        prm.declare_entry("Source nw",
+                          "0",
+                          Patterns::Anything(),
+                          "Non-wetting-phase source h^nw (1/s), as Source w.");
+        prm.leave_subsection();
+      }
+
+      void
+      declare_fracture_data(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Fracture");
+        prm.declare_entry("Aperture", "1e-3", Patterns::Double(), "Initial aperture d_f (m).");
+        prm.declare_entry("Normal transmissibility",
+                          "1e-9",
+                          Patterns::Double(),
+                          "Lambda_f of eq. (3) (m).");
+        prm.declare_entry(
+          "Damaged layer thickness",
+          "0",
+          Patterns::Double(),
+          "d_a: thickness of the damaged layer on each side of a fracture, the pore "
+          "space of the matrix-fracture interface unknowns (m; 0: massless "
+          "interfaces). The layer uses the fracture's laws.");
+        prm.declare_entry("Damaged layer porosity",
+                          "0",
+                          Patterns::Double(),
+                          "phi_a: porosity of the damaged layer (-).");
+        prm.leave_subsection();
+      }
+
+      void
+      declare_boundary_conditions(ParameterHandler &prm)
+      {
+        prm.enter_subsection("Boundary conditions");
+        prm.declare_entry("Matrix",
+                          "",
+                          Patterns::Anything(),
+                          "Dirichlet conditions on matrix boundary faces: 'id: p_w = v, p_nw = v; "
+                          "id: s_nw = v, p_nw = v' (two of p_w, p_nw, s_nw, s_w per id; Pa, -). "
+                          "Other boundaries: no flux.");
+        prm.declare_entry("Fracture",
+                          "",
+                          Patterns::Anything(),
+                          "Dirichlet conditions on fracture nodes on the outer boundary, same "
+                          "syntax (matrix boundary ids).");
+        prm.leave_subsection();
+      }
+
+      void
+      declare_time_stepping(ParameterHandler &prm)
+      {
+        prm.declare_entry("Final time", "1", Patterns::Double(), "End of the simulation (s).");
+        prm.declare_entry("Initial time step", "0.01", Patterns::Double(), "First time step (s).");
+        prm.declare_entry("Maximum time step",
+                          "1e100",
+                          Patterns::Double(),
+                          "Delta t_max in dt_{k+1/2} = min(rho dt_{k-1/2}, Delta t_max) (s).");
+        prm.declare_entry("Time step growth", "1.1", Patterns::Double(), "rho (-).");
+        prm.declare_entry("Maximum time step cuts",
+                          "20",
+                          Patterns::Integer(0),
+                          "Halvings of one step allowed before giving up.");
+        prm.declare_entry("Output every",
+                          "1",
+                          Patterns::Integer(0),
+                          "Write fields every n accepted steps (0: only the last).");
+      }
+
+      void
+      declare_newton(ParameterHandler &prm)
+      {
+        prm.declare_entry("Maximum Newton iterations",
+                          "50",
+                          Patterns::Integer(1),
+                          "Newton iterations before the step is halved.");
+        prm.declare_entry("Residual tolerance",
+                          "1e-5",
+                          Patterns::Double(),
+                          "Stop Newton when |R|/|R_0| is below this ...");
+        prm.declare_entry("Update tolerance",
+                          "1e-4",
+                          Patterns::Double(),
+                          "... or when max |dp| / max |p| is below this ...");
+        prm.declare_entry("Mass balance tolerance",
+                          "1e-11",
+                          Patterns::Double(),
+                          "... and each phase's relative mass defect is below this.");
+        prm.declare_entry("Capillary chop",
+                          "1",
+                          Patterns::Double(0),
+                          "Newton: largest change of a node's capillary pressure per iteration, in "
+                          "units of the pressure scale of its rock's saturation law (Corey R, van "
+                          "Genuchten P_r, Brooks-Corey entry pressure; 0: no limit).");
+        prm.declare_entry(
+          "Entry slope iterations",
+          "1000",
+          Patterns::Integer(0),
+          "Newton: number of iterations per time step that use the entry slope "
+          "(see Entry slope in Jacobian); later iterations use the exact Jacobian.");
+        prm.declare_entry("Stagnation iterations",
+                          "10",
+                          Patterns::Integer(0),
+                          "Newton: give up (and cut the time step) after this many iterations in "
+                          "which neither the residual nor the mass defect halved (0: never).");
+        prm.declare_entry("Saturation chop",
+                          "0",
+                          Patterns::Double(0),
+                          "Newton: largest change of a node's non-wetting saturation per "
+                          "iteration (Appleyard chop; 0: no limit). Interface nodes are limited "
+                          "under both the matrix and the fracture law.");
+        prm.declare_entry("Line search",
+                          "false",
+                          Patterns::Bool(),
+                          "Newton: halve the update (up to 4 times) while it increases the "
+                          "residual norm (breaks the two-cycles of van Genuchten-Mualem k_r^w, "
+                          "whose slope is unbounded at S^nw = 0).");
+        prm.declare_entry("Capillary pressure bound",
+                          "false",
+                          Patterns::Bool(),
+                          "Newton: keep p_c >= p_e at every node, p_e the entry pressure of its "
+                          "saturation law (0 for corey and van genuchten): the non-wetting "
+                          "pressure of a saturated node is projected onto p^w + p_e, and the "
+                          "Jacobian uses S'(p_e+) there. S = 0 for p_c <= p_e, so this removes a "
+                          "pressure that no equation fixes; use it with Mobility floor nw = 0.");
+        prm.declare_entry("Entry slope in Jacobian",
+                          "true",
+                          Patterns::Bool(),
+                          "Newton: use S'(p_e+) instead of 0 in the Jacobian where p_c <= p_e, "
+                          "the entry pressure of the saturation law (false: exact Jacobian).");
+        const auto &solvers = SerialLinearSolverRegistry::instance();
+        prm.declare_entry("Linear solver",
+                          "umfpack",
+                          Patterns::Selection(solvers.selection()),
+                          "Solver of the linear system of each Newton iteration; " +
+                            solvers.documentation());
+      }
+
+      std::array<double, 2>
+      get_pressures(const ParameterHandler &prm, const std::vector<std::string> &path)
+      {
+        return {{prm.get_double(path, "Initial pressure w"),
+                 prm.get_double(path, "Initial pressure nw")}};
+      }
+    } // namespace
+
+    std::string
+    rock_default(const std::string &matrix_value, const std::string &fracture_value)
+    {
+      return rock_being_declared == matrix_rock ? matrix_value : fracture_value;
+    }
+
+    void
+    FlowParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Flow");
+      prm.declare_entry("Axisymmetric",
+                        "false",
+                        Patterns::Bool(),
+                        "Weight volumes and face measures by 2 pi r, r = second coordinate (the "
+                        "radial section of the paper's Section 5.3).");
+      prm.declare_entry("Viscosity w",
+                        "1e-3",
+                        Patterns::Double(),
+                        "Wetting viscosity mu_w (Pa s).");
+      prm.declare_entry("Viscosity nw",
+                        "1.851e-5",
+                        Patterns::Double(),
+                        "Non-wetting viscosity mu_nw (Pa s).");
+      declare_time_stepping(prm);
+      declare_newton(prm);
+      prm.declare_entry("Reference pressure",
+                        "0",
+                        Patterns::Double(),
+                        "Pressures are stored relative to this value (Pa); the results do not "
+                        "depend on it. Set it to the pressure of the best-conducting region (the "
+                        "fractures' boundary pressure): one ulp of a stored 1e5 Pa there can "
+                        "exceed the mass balance tolerance (doc/benchmarks/flow.md).");
+      declare_rock(prm, matrix_rock);
+      declare_matrix_data(prm);
+      declare_rock(prm, fracture_rock);
+      declare_fracture_data(prm);
+      declare_boundary_conditions(prm);
+      prm.leave_subsection();
+    }
+
+    void
+    FlowParameters::parse_parameters(const ParameterHandler &prm)
+    {
+      const std::vector<std::string> flow = {"Flow"};
+      axisymmetric                        = prm.get_bool(flow, "Axisymmetric");
+      for (const Rock r : {matrix_rock, fracture_rock})
+        {
+          const std::vector<std::string> path   = {"Flow", rock_names[r]};
+          const std::string              prefix = std::string("Flow/") + rock_names[r];
+          RockType                      &rock   = rocks[r];
+          rock.saturation                       = SaturationLawRegistry::instance().create(
+            prm.get(path, "Saturation law"), prefix + "/Saturation law", prm, path);
+          rock.relative_permeability = RelativePermeabilityRegistry::instance().create(
+            prm.get(path, "Relative permeability"), prefix + "/Relative permeability", prm, path);
+          rock.viscosity[0]      = prm.get_double(flow, "Viscosity w");
+          rock.viscosity[1]      = prm.get_double(flow, "Viscosity nw");
+          rock.mobility_floor    = prm.get_double(path, "Mobility floor");
+          rock.mobility_floor_nw = prm.get_double(path, "Mobility floor nw");
+          initial_pressure[r]    = get_pressures(prm, path);
+        }
+
+      const std::vector<std::string> matrix = {"Flow", "Matrix"}, fracture = {"Flow", "Fracture"};
+      porosity                = prm.get_double(matrix, "Porosity");
+      permeability            = prm.get_double(matrix, "Permeability");
+      source                  = {{prm.get(matrix, "Source w"), prm.get(matrix, "Source nw")}};
+      aperture                = prm.get_double(fracture, "Aperture");
+      normal_transmissibility = prm.get_double(fracture, "Normal transmissibility");
+      damaged_layer_thickness = prm.get_double(fracture, "Damaged layer thickness");
+      damaged_layer_porosity  = prm.get_double(fracture, "Damaged layer porosity");
+      reference_pressure      = prm.get_double(flow, "Reference pressure");
+
+      stepping.final_time   = prm.get_double(flow, "Final time");
+      stepping.initial_step = prm.get_double(flow, "Initial time step");
+      stepping.maximum_step = prm.get_double(flow, "Maximum time step");
+      stepping.growth       = prm.get_double(flow, "Time step growth");
+      stepping.maximum_cuts = prm.get_integer(flow, "Maximum time step cuts");
+      stepping.output_every = prm.get_integer(flow, "Output every");
+
+      newton.max_iterations         = prm.get_integer(flow, "Maximum Newton iterations");
+      newton.residual_tolerance     = prm.get_double(flow, "Residual tolerance");
+      newton.update_tolerance       = prm.get_double(flow, "Update tolerance");
+      newton.mass_tolerance         = prm.get_double(flow, "Mass balance tolerance");
+      newton.capillary_chop         = prm.get_double(flow, "Capillary chop");
+      newton.saturation_chop        = prm.get_double(flow, "Saturation chop");
+      newton.stagnation_iterations  = prm.get_integer(flow, "Stagnation iterations");
+      newton.entry_slope_iterations = prm.get_integer(flow, "Entry slope iterations");
+      newton.entry_slope            = prm.get_bool(flow, "Entry slope in Jacobian");
+      newton.capillary_bound        = prm.get_bool(flow, "Capillary pressure bound");
+      newton.line_search            = prm.get_bool(flow, "Line search");
+      newton.linear_solver          = prm.get(flow, "Linear solver");
+
+      const std::vector<std::string> bc = {"Flow", "Boundary conditions"};
+      matrix_dirichlet                  = parse_dirichlet(prm.get(bc, "Matrix"),
+                                         rocks[matrix_rock],
+                                         "Flow/Boundary conditions/Matrix");
+      fracture_dirichlet                = parse_dirichlet(prm.get(bc, "Fracture"),
+                                           rocks[fracture_rock],
+                                           "Flow/Boundary conditions/Fracture");
+      validate();
+    }
+
+    void
+    FlowParameters::validate() const
+    {
+      for (const Rock r : {matrix_rock, fracture_rock})
+        rocks[r].validate("Flow", std::string("Flow/") + rock_names[r]);
+
+      check_input(stepping.final_time > 0, "Flow/Final time", "must be positive");
+      check_input(stepping.initial_step > 0, "Flow/Initial time step", "must be positive");
+      check_input(stepping.maximum_step > 0, "Flow/Maximum time step", "must be positive");
+      check_input(stepping.growth >= 1, "Flow/Time step growth", "must be >= 1");
+
+      check_input(newton.saturation_chop < 1, "Flow/Saturation chop", "must be below 1");
+      check_input(SerialLinearSolverRegistry::instance().has(newton.linear_solver),
+                  "Flow/Linear solver",
+                  "'" + newton.linear_solver + "' is not one of " +
+                    SerialLinearSolverRegistry::instance().selection());
+
+      check_input(porosity > 0 && porosity < 1, "Flow/Matrix/Porosity", "must lie in (0, 1)");
+      check_input(permeability > 0, "Flow/Matrix/Permeability", "must be positive");
+      check_input(aperture > 0, "Flow/Fracture/Aperture", "must be positive");
+      check_input(damaged_layer_thickness >= 0,
+                  "Flow/Fracture/Damaged layer thickness",
+                  "must be non-negative");
+      check_input(damaged_layer_porosity >= 0 && damaged_layer_porosity < 1,
+                  "Flow/Fracture/Damaged layer porosity",
+                  "must lie in [0, 1)");
+      check_input(damaged_layer_thickness == 0 || damaged_layer_porosity > 0,
+                  "Flow/Fracture/Damaged layer porosity",
+                  "must be positive when the damaged layer thickness is");
+      check_input(normal_transmissibility > 0,
+                  "Flow/Fracture/Normal transmissibility",
+                  "must be positive");
+    }
+
+    DirichletData
+    parse_dirichlet(const std::string &text, const RockType &rock, const std::string &parameter)
+    {
+      DirichletData result;
+      for (const std::string &entry : Utilities::split_string_list(text, ';'))
+        {
+          if (entry.empty())
+            continue;
+          const auto colon = entry.find(':');
+          check_input(colon != std::string::npos,
+                      parameter,
+                      "expected 'id: name = value, name = value', got '" + entry + "'");
+          int id = -1;
+          try
+            {
+              id = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
+            }
+          catch (...)
+            {
+            }
+          check_input(id >= 0 && id < int(geometry::first_fracture_boundary_id),
+                      parameter,
+                      "bad boundary id in '" + entry + "'");
+          std::map<std::string, double> values;
+          for (const std::string &item : Utilities::split_string_list(entry.substr(colon + 1), ','))
+            {
+              const auto eq = item.find('=');
+              check_input(eq != std::string::npos,
+                          parameter,
+                          "expected 'name = value' in '" + entry + "'");
+              const std::string key = Utilities::trim(item.substr(0, eq));
+              check_input(key == "p_w" || key == "p_nw" || key == "s_nw" || key == "s_w",
+                          parameter,
+                          "unknown quantity '" + key + "' (p_w, p_nw, s_nw, s_w)");
+              double v = 0;
+              try
+                {
+                  v = Utilities::string_to_double(Utilities::trim(item.substr(eq + 1)));
+                }
+              catch (...)
+                {
+                  throw InputError(parameter, "bad number in '" + item + "'");
+                }
+              values[key] = v;
+            }
+          check_input(values.size() == 2,
+                      parameter,
+                      "give exactly two of p_w, p_nw, s_nw, s_w for boundary id " +
+                        std::to_string(id));
+          if (values.count("s_w"))
+            {
+              check_input(values["s_w"] >= 0 && values["s_w"] <= 1,
+                          parameter,
+                          "saturation s_w outside [0, 1] for boundary id " + std::to_string(id));
+              values["s_nw"] = 1. - values["s_w"];
+            }
+          if (values.count("s_nw"))
+            check_input(values["s_nw"] >= 0 && values["s_nw"] <= 1,
+                        parameter,
+                        "saturation s_nw outside [0, 1] for boundary id " + std::to_string(id));
+          std::array<double, 2> p;
+          if (values.count("p_w") && values.count("p_nw"))
+            p = {{values["p_w"], values["p_nw"]}};
+          else
+            {
+              check_input(values.count("s_nw"),
+                          parameter,
+                          "give a saturation and one pressure, or both pressures, for id " +
+                            std::to_string(id));
+              const double pc = rock.saturation->inverse(values["s_nw"], parameter);
+              if (values.count("p_w"))
+                p = {{values["p_w"], values["p_w"] + pc}};
+              else
+                p = {{values["p_nw"] - pc, values["p_nw"]}};
+            }
+          result[id] = p;
+        }
+      return result;
+    }
+
+    namespace
+    {
+      /// The law @p name of @p registry, parsed from a ParameterHandler with the Flow subsection
+      /// declared and @p values set in Flow/<rock>; errors name @p selection.
+      template <typename RegistryType>
+      auto
+      make_law(const RegistryType                       &registry,
+               const std::string                        &selection,
+               const std::string                        &name,
+               const std::map<std::string, std::string> &values,
+               const Rock                                rock)
+      {
+        ParameterHandler prm;
+        FlowParameters::declare_parameters(prm);
+        prm.enter_subsection("Flow");
+        prm.enter_subsection(rock_names[rock]);
+        for (const auto &[entry, value] : values)
+          prm.set(entry, value);
+        prm.leave_subsection();
+        prm.leave_subsection();
+        return registry.create(name,
+                               std::string("Flow/") + rock_names[rock] + "/" + selection,
+                               prm,
+                               {"Flow", rock_names[rock]});
+      }
+    } // namespace
+
+    std::shared_ptr<const SaturationLaw>
+    make_saturation_law(const std::string                        &name,
+                        const std::map<std::string, std::string> &values,
+                        const Rock                                rock)
+    {
+      return make_law(SaturationLawRegistry::instance(), "Saturation law", name, values, rock);
+    }
+
+    std::shared_ptr<const RelativePermeability>
+    make_relative_permeability(const std::string                        &name,
+                               const std::map<std::string, std::string> &values,
+                               const Rock                                rock)
+    {
+      return make_law(
+        RelativePermeabilityRegistry::instance(), "Relative permeability", name, values, rock);
+    }
+  } // namespace flow
+} // namespace porofrac
