@@ -15,19 +15,6 @@ namespace porofrac
 
     namespace
     {
-      /// Face-state counts (open, stick, slip) of the faces of fracture @p id, or of all.
-      template <int dim>
-      std::array<unsigned int, 3>
-      count_states(const mechanics::ContactProblem<dim> &problem,
-                   const int                             id = -1)
-      {
-        std::array<unsigned int, 3> c{{0, 0, 0}};
-        for (const auto &face : problem.get_mesh().fracture_faces)
-          if (id < 0 || int(face.fracture_id) == id)
-            ++c[static_cast<unsigned int>(problem.state(face.index))];
-        return c;
-      }
-
       /// Iterations, face states per fracture, ranges of the face values (local frame).
       template <int dim>
       void
@@ -36,21 +23,20 @@ namespace porofrac
         const auto &prm  = problem.get_parameters();
         const auto &mesh = problem.get_mesh();
         context.report << "Mechanics: solver " << prm.method << ", "
-                       << (prm.stick_guess ? "stick" : "open") << " guess, c = "
-                       << std::scientific << std::setprecision(1) << prm.c << std::defaultfloat
-                       << ": converged in " << problem.statistics().iterations << " iterations"
-                       << std::endl;
+                       << (prm.stick_guess ? "stick" : "open") << " guess, c = " << std::scientific
+                       << std::setprecision(1) << prm.c << std::defaultfloat << ": converged in "
+                       << problem.statistics().iterations << " iterations" << std::endl;
         if (problem.linear_solver_name() != prm.linear_solver)
           context.report << "Mechanics: Schur complement unavailable (the elasticity block alone "
                             "is singular); the full system was solved"
                          << std::endl;
-        const auto counts = count_states(problem);
+        const auto counts = mechanics::count_states(problem);
         context.report << "Mechanics: faces open " << counts[0] << ", stick " << counts[1]
                        << ", slip " << counts[2] << std::endl;
         if (mesh.fracture_ids.size() > 1)
           for (const unsigned int id : mesh.fracture_ids)
             {
-              const auto c = count_states(problem, id);
+              const auto c = mechanics::count_states(problem, id);
               context.report << "Mechanics: fracture " << id << ": open " << c[0] << ", stick "
                              << c[1] << ", slip " << c[2] << std::endl;
             }
@@ -66,8 +52,7 @@ namespace porofrac
             ln_min       = std::min(ln_min, v.lambda[0]);
             ln_max       = std::max(ln_max, v.lambda[0]);
             jt_max = std::max(jt_max, mechanics::LocalContactLaw<dim>::tangential(v.jump).norm());
-            lt_max =
-              std::max(lt_max, mechanics::LocalContactLaw<dim>::tangential(v.lambda).norm());
+            lt_max = std::max(lt_max, mechanics::LocalContactLaw<dim>::tangential(v.lambda).norm());
           }
         context.report << std::scientific << std::setprecision(3) << "Mechanics: jump_n in ["
                        << jn_min << ", " << jn_max << "], max |jump_t| " << jt_max << "\n"
@@ -82,7 +67,7 @@ namespace porofrac
       {
         const auto                         &prm    = problem.get_parameters();
         const mechanics::ContactStatistics &s      = problem.statistics();
-        const auto                          counts = count_states(problem);
+        const auto                          counts = mechanics::count_states(problem);
         io::Json                            m      = io::Json::object();
         m["solver"]                                = prm.method;
         m["initial_guess"]              = std::string(prm.stick_guess ? "stick" : "open");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/parameters.h>
-#include <porofrac/coupling/scene.h>
+#include <porofrac/coupling/parameters.h>
 #include <porofrac/flow/parameters.h>
 #include <porofrac/geometry/parameters.h>
 #include <porofrac/io/output_parameters.h>
@@ -30,7 +30,7 @@ namespace porofrac
       geometry::GeometryParameters::declare_parameters(prm);
       mechanics::ContactParameters::declare_parameters(prm);
       flow::FlowParameters::declare_parameters(prm);
-      coupling::declare_parameters(prm);
+      coupling::CouplingParameters::declare_parameters(prm);
     }
   } // namespace app
 } // namespace porofrac

@@ -5,11 +5,11 @@
 
 #include <porofrac/app/contact_mechanics_scene.h>
 #include <porofrac/app/mesh_report.h>
+#include <porofrac/app/poromechanics_scene.h>
 #include <porofrac/app/simulator.h>
+#include <porofrac/app/two_phase_flow_scene.h>
 #include <porofrac/base/config.h>
 #include <porofrac/base/exceptions.h>
-#include <porofrac/coupling/scene.h>
-#include <porofrac/flow/scene.h>
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/geometry/parameters.h>
@@ -85,18 +85,21 @@ namespace porofrac
         geometry::write_mesh(*mesh, context.path("mesh"), format);
       }
 
+      // Every physics parameter set the scene uses is parsed (and validated) once, here.
+      PhysicsParameters physics_parameters;
+      if (physics == "contact mechanics" || physics == "poromechanics")
+        physics_parameters.mechanics.parse_parameters(prm, dim);
+      if (physics == "two-phase flow" || physics == "poromechanics")
+        physics_parameters.flow.parse_parameters(prm);
+      if (physics == "poromechanics")
+        physics_parameters.coupling.parse_parameters(prm);
+
       if (physics == "contact mechanics")
-        {
-          PhysicsParameters physics_parameters;
-          physics_parameters.mechanics.parse_parameters(prm, dim);
-          run_contact_mechanics_scene(physics_parameters, *mesh, context);
-        }
+        run_contact_mechanics_scene(physics_parameters, *mesh, context);
       else if (physics == "two-phase flow")
-        {
-          flow::run_scene<dim>(prm, *mesh, context);
-        }
+        run_two_phase_flow_scene(physics_parameters, *mesh, context);
       else if (physics == "poromechanics")
-        coupling::run_scene<dim>(prm, *mesh, context);
+        run_poromechanics_scene(physics_parameters, *mesh, context);
 
       summary["wall_time_s"] = wall_clock.wall_time();
       Utilities::System::MemoryStats memory;

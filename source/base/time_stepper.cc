@@ -96,6 +96,7 @@ namespace porofrac
     // Summed, not set to the target, so that a run without output times reproduces the plain
     // sum of its steps; targets are recognized within a relative round-off tolerance.
     t += attempt;
+    last_step = attempt;
     last_cuts = n_cuts;
     // dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max) from the step taken; a step shortened only to
     // land on a target does not slow the growth down.

@@ -14,61 +14,6 @@ namespace porofrac
 {
   namespace coupling
   {
-    void
-    FixedPointParameters::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Coupling");
-      prm.declare_entry("Method",
-                        "newton-krylov",
-                        Patterns::Selection("newton-krylov|anderson|fixed point"),
-                        "How each time step's fixed point is solved: Jacobian-free Newton-Krylov "
-                        "acceleration (paper, Section 5), Anderson acceleration (one map "
-                        "evaluation per iteration), or plain fixed-point iterations.");
-      prm.declare_entry("Anderson depth",
-                        "5",
-                        Patterns::Integer(1),
-                        "Anderson: number of previous residual differences in the least-squares "
-                        "mixing.");
-      prm.declare_entry("Tolerance",
-                        "1e-6",
-                        Patterns::Double(0),
-                        "Stop at this relative increment or relative residual (paper: 1e-6).");
-      prm.declare_entry("Max iterations",
-                        "30",
-                        Patterns::Integer(1),
-                        "Newton (or fixed-point) iterations before the time step is cut.");
-      prm.declare_entry("GMRES restart",
-                        "30",
-                        Patterns::Integer(1),
-                        "Krylov space size of GMRES in each Newton step.");
-      prm.declare_entry(
-        "Max GMRES iterations",
-        "30",
-        Patterns::Integer(1),
-        "GMRES iterations per Newton step (each costs one coupled map evaluation).");
-      prm.declare_entry("Forcing term max",
-                        "0.1",
-                        Patterns::Double(0, 1),
-                        "Upper bound of the Eisenstat-Walker relative GMRES tolerance.");
-      prm.leave_subsection();
-    }
-
-
-
-    void
-    FixedPointParameters::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Coupling");
-      method               = prm.get("Method");
-      tolerance            = prm.get_double("Tolerance");
-      max_iterations       = prm.get_integer("Max iterations");
-      gmres_restart        = prm.get_integer("GMRES restart");
-      max_gmres_iterations = prm.get_integer("Max GMRES iterations");
-      eta_max              = prm.get_double("Forcing term max");
-      anderson_depth       = prm.get_integer("Anderson depth");
-      prm.leave_subsection();
-      check_input(tolerance > 0, "Coupling/Tolerance", "must be positive");
-    }
 
 
 

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/utilities.h>
+
 #include <porofrac/base/exceptions.h>
 #include <porofrac/coupling/parameters.h>
 #include <porofrac/io/text.h>
+
+#include <algorithm>
 
 namespace porofrac
 {
@@ -12,8 +16,53 @@ namespace porofrac
     void
     CouplingParameters::declare_parameters(ParameterHandler &prm)
     {
-      FixedPointParameters::declare_parameters(prm);
       prm.enter_subsection("Coupling");
+      prm.declare_entry("Method",
+                        "newton-krylov",
+                        Patterns::Selection("newton-krylov|anderson|fixed point"),
+                        "How each time step's fixed point is solved: Jacobian-free Newton-Krylov "
+                        "acceleration (paper, Section 5), Anderson acceleration (one map "
+                        "evaluation per iteration), or plain fixed-point iterations.");
+      prm.declare_entry("Anderson depth",
+                        "5",
+                        Patterns::Integer(1),
+                        "Anderson: number of previous residual differences in the least-squares "
+                        "mixing.");
+      prm.declare_entry("Tolerance",
+                        "1e-6",
+                        Patterns::Double(0),
+                        "Stop at this relative increment or relative residual (paper: 1e-6).");
+      prm.declare_entry("Max iterations",
+                        "30",
+                        Patterns::Integer(1),
+                        "Newton (or fixed-point) iterations before the time step is cut.");
+      prm.declare_entry("GMRES restart",
+                        "30",
+                        Patterns::Integer(1),
+                        "Krylov space size of GMRES in each Newton step.");
+      prm.declare_entry(
+        "Max GMRES iterations",
+        "30",
+        Patterns::Integer(1),
+        "GMRES iterations per Newton step (each costs one coupled map evaluation).");
+      prm.declare_entry("Forcing term max",
+                        "0.1",
+                        Patterns::Double(0, 1),
+                        "Upper bound of the Eisenstat-Walker relative GMRES tolerance.");
+      prm.declare_entry("Fracture output times",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated times (s) at which fractures.csv rows and the fields are "
+                        "written: the time steps are shortened to land on them; t = 0 and the "
+                        "final time always are.");
+      prm.declare_entry("Analytical solution",
+                        "none",
+                        Patterns::Selection("none|terzaghi"),
+                        "terzaghi: at the final time, the relative L2 error of the matrix wetting "
+                        "pressure against Terzaghi's consolidation of a laterally confined column, "
+                        "drained at the top (largest y) through a Dirichlet condition and loaded "
+                        "by a constant pressure (coupling/analytical.h).");
+
       prm.declare_entry("Biot coefficient",
                         "1",
                         Patterns::Double(),
@@ -58,20 +107,49 @@ namespace porofrac
 
 
     void
-    CouplingParameters::parse_parameters(ParameterHandler &prm)
+    CouplingParameters::parse_parameters(const ParameterHandler &prm)
     {
-      fixed_point.parse_parameters(prm);
-      prm.enter_subsection("Coupling");
-      biot_coefficient = prm.get_double("Biot coefficient");
-      biot_modulus     = prm.get_double("Biot modulus");
-      capillary_energy = prm.get_bool("Capillary energy in p_E");
-      variable         = prm.get("Fixed point") == "displacement" ? CouplingVariable::displacement :
-                                                                    CouplingVariable::equivalent_pressure;
-      inner_flow_residual_tolerance = prm.get_double("Inner flow residual tolerance");
-      inner_flow_update_tolerance   = prm.get_double("Inner flow update tolerance");
-      kozeny_carman                 = prm.get_bool("Kozeny-Carman");
-      extrapolate_initial_guess     = prm.get_bool("Extrapolate initial guess");
-      prm.leave_subsection();
+      const std::vector<std::string> c  = {"Coupling"};
+      FixedPointParameters          &fp = fixed_point;
+      fp.method                         = prm.get(c, "Method");
+      fp.tolerance                      = prm.get_double(c, "Tolerance");
+      fp.max_iterations                 = prm.get_integer(c, "Max iterations");
+      fp.gmres_restart                  = prm.get_integer(c, "GMRES restart");
+      fp.max_gmres_iterations           = prm.get_integer(c, "Max GMRES iterations");
+      fp.eta_max                        = prm.get_double(c, "Forcing term max");
+      fp.anderson_depth                 = prm.get_integer(c, "Anderson depth");
+      biot_coefficient                  = prm.get_double(c, "Biot coefficient");
+      biot_modulus                      = prm.get_double(c, "Biot modulus");
+      capillary_energy                  = prm.get_bool(c, "Capillary energy in p_E");
+      variable                          = prm.get(c, "Fixed point") == "displacement" ?
+                                            CouplingVariable::displacement :
+                                            CouplingVariable::equivalent_pressure;
+      inner_flow_residual_tolerance     = prm.get_double(c, "Inner flow residual tolerance");
+      inner_flow_update_tolerance       = prm.get_double(c, "Inner flow update tolerance");
+      kozeny_carman                     = prm.get_bool(c, "Kozeny-Carman");
+      extrapolate_initial_guess         = prm.get_bool(c, "Extrapolate initial guess");
+      output_times.clear();
+      for (const std::string &s :
+           Utilities::split_string_list(prm.get(c, "Fracture output times"), ','))
+        try
+          {
+            output_times.push_back(Utilities::string_to_double(s));
+          }
+        catch (...)
+          {
+            throw InputError("Coupling/Fracture output times", "'" + s + "' is not a number");
+          }
+      std::sort(output_times.begin(), output_times.end());
+      analytical_solution = prm.get(c, "Analytical solution");
+      validate();
+    }
+
+
+
+    void
+    CouplingParameters::validate() const
+    {
+      check_input(fixed_point.tolerance > 0, "Coupling/Tolerance", "must be positive");
       check_input(biot_coefficient >= 0 && biot_coefficient <= 1,
                   "Coupling/Biot coefficient",
                   "must lie in [0, 1], got " + io::to_text(biot_coefficient));

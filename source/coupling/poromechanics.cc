@@ -2,6 +2,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/coupling/closure.h>
 #include <porofrac/coupling/poromechanics.h>
+#include <porofrac/flow/flow_output.h>
 #include <porofrac/io/text.h>
 
 #include <cmath>
@@ -55,7 +56,8 @@ namespace porofrac
       y_initial = displacement_measures();
       y_old     = y_initial;
       set_flow_inputs(y_initial);
-      u_old = mechanics.displacement();
+      u_old      = mechanics.displacement();
+      lambda_old = mechanics.multipliers();
       jump_old.resize(n_fracture);
       for (unsigned int f = 0; f < n_fracture; ++f)
         jump_old[f] = mechanics.jump(f);
@@ -277,7 +279,6 @@ namespace porofrac
       if (report.converged)
         {
           p_E = flow_equivalent_pressure();
-          compute_step_energy_terms();
         }
       else
         {
@@ -311,7 +312,8 @@ namespace porofrac
       dt_old    = dt;
       p_E_old   = p_E;
       y_old     = displacement_measures();
-      u_old     = mechanics.displacement();
+      u_old      = mechanics.displacement();
+      lambda_old = mechanics.multipliers();
       for (unsigned int f = 0; f < n_fracture; ++f)
         jump_old[f] = mechanics.jump(f);
     }
@@ -319,45 +321,12 @@ namespace porofrac
 
 
     template <int dim>
-    EnergyTerms
-    Poromechanics<dim>::energy() const
-    {
-      const auto &solver = *flow.solver;
-      const auto &grid   = *flow.grid;
-      EnergyTerms e;
-      for (unsigned int K = 0; K < n_matrix; ++K)
-        {
-          const double pc = solver.state[K][1] - solver.state[K][0];
-          e.capillary_matrix += matrix_porosity(K) *
-                                flow.rocks[flow::matrix_rock].saturation->energy(pc) *
-                                grid.nodes[K].measure;
-          e.storage += p_E[K] * p_E[K] * grid.nodes[K].measure / (2 * parameters.biot_modulus);
-        }
-      for (unsigned int f = 0; f < n_fracture; ++f)
-        {
-          const unsigned int i  = n_matrix + f;
-          const double       pc = solver.state[i][1] - solver.state[i][0];
-          e.capillary_fracture +=
-            grid.pore_volume(i) * flow.rocks[flow::fracture_rock].saturation->energy(pc);
-        }
-      e.elastic = mechanics.elastic_energy();
-      return e;
-    }
-
-
-
-    template <int dim>
     void
-    Poromechanics<dim>::compute_step_energy_terms()
+    Poromechanics<dim>::restore_accepted_state()
     {
-      const auto &solver  = *flow.solver;
-      const auto  balance = solver.energy_exchange(solver.state, dt);
-      step_dissipation    = balance.dissipation;
-      step_supplied_work  = balance.boundary_work + mechanics.external_work(u_old);
-      step_friction_work  = 0;
-      for (unsigned int f = 0; f < n_fracture; ++f)
-        step_friction_work +=
-          mechanics.multiplier(f) * (mechanics.jump(f) - jump_old[f]) * mechanics.face_measure(f);
+      flow.solver->state = flow.solver->old_state;
+      mechanics.set_state(u_old, lambda_old);
+      p_E = p_E_old;
     }
 
 
@@ -366,14 +335,7 @@ namespace porofrac
     double
     Poromechanics<dim>::mean_fracture_width() const
     {
-      const auto &faces = mechanics.get_mesh().fracture_faces;
-      double      num = 0, den = 0;
-      for (unsigned int f = 0; f < n_fracture; ++f)
-        {
-          num += faces[f].measure * flow.grid->aperture[f];
-          den += faces[f].measure;
-        }
-      return den > 0 ? num / den : 0.;
+      return flow::mean_aperture(mechanics.get_mesh(), *flow.grid);
     }
 
     template class Poromechanics<2>;

@@ -7,7 +7,9 @@
 #include <porofrac/base/registry.h>
 #include <porofrac/flow/parameters.h>
 #include <porofrac/geometry/cut_mesh.h>
+#include <porofrac/io/text.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace porofrac
@@ -336,6 +338,18 @@ namespace porofrac
       check_input(stepping.initial_step > 0, "Flow/Initial time step", "must be positive");
       check_input(stepping.maximum_step > 0, "Flow/Maximum time step", "must be positive");
       check_input(stepping.growth >= 1, "Flow/Time step growth", "must be >= 1");
+      // A configuration that cannot reach the final time in a sane number of steps is bad input.
+      double t = 0, dt = std::min(stepping.initial_step, stepping.maximum_step);
+      for (unsigned int k = 0; k < 1000000 && t < stepping.final_time; ++k)
+        {
+          t += dt;
+          dt = std::min(stepping.growth * dt, stepping.maximum_step);
+        }
+      check_input(t >= stepping.final_time,
+                  "Flow/Maximum time step",
+                  "the final time " + io::to_text(stepping.final_time) +
+                    " s is not reached in 10^6 steps with this initial step, growth and "
+                    "maximum step");
 
       check_input(newton.saturation_chop < 1, "Flow/Saturation chop", "must be below 1");
       check_input(SerialLinearSolverRegistry::instance().has(newton.linear_solver),

@@ -9,8 +9,9 @@ namespace porofrac
   namespace io
   {
     PvdWriter::PvdWriter(const std::string &filename)
-      : filename(filename)
-    {}
+        : filename(filename)
+    {
+    }
 
 
 

@@ -12,11 +12,11 @@ namespace porofrac
                              const Tensor<1, dim>       &jump,
                              LocalRows<dim>             &rows) const
     {
-      rows.A_lambda        = 0;
-      rows.A_jump          = 0;
-      rows.rhs             = 0;
-      const FaceState st   = law.state(lambda, jump);
-      const double    b    = law.b(lambda, jump);
+      rows.A_lambda      = 0;
+      rows.A_jump        = 0;
+      rows.rhs           = 0;
+      const FaceState st = law.state(lambda, jump);
+      const double    b  = law.b(lambda, jump);
       if (st == FaceState::open)
         {
           for (unsigned int i = 0; i < dim; ++i)

@@ -19,11 +19,27 @@ namespace porofrac
 
 
     template <int dim>
+    FaceStateCounts
+    count_states(const ContactProblem<dim> &problem, const int fracture_id)
+    {
+      FaceStateCounts c{{0, 0, 0}};
+      for (const auto &face : problem.get_mesh().fracture_faces)
+        if (fracture_id < 0 || int(face.fracture_id) == fracture_id)
+          ++c[static_cast<unsigned int>(problem.state(face.index))];
+      return c;
+    }
+
+
+
+    template <int dim>
     ContactFaceValues<dim>
     contact_face_values(const ContactProblem<dim> &problem, const unsigned int f)
     {
       const Tensor<2, dim> R = problem.frame(f);
-      return {R * problem.jump(f), R * problem.multiplier(f), problem.state(f), problem.friction(f)};
+      return {R * problem.jump(f),
+              R * problem.multiplier(f),
+              problem.state(f),
+              problem.friction(f)};
     }
 
 
@@ -41,12 +57,12 @@ namespace porofrac
         fields.emplace_back(name, std::vector<double>());
       for (const auto &face : problem.get_mesh().fracture_faces)
         {
-          using V                        = ContactFaceValues<dim>;
-          const V             v          = contact_face_values(problem, face.index);
-          std::vector<double> row        = {v.jump[0],
-                                            V::tangential(v.jump),
-                                            v.lambda[0],
-                                            V::tangential(v.lambda)};
+          using V                 = ContactFaceValues<dim>;
+          const V             v   = contact_face_values(problem, face.index);
+          std::vector<double> row = {v.jump[0],
+                                     V::tangential(v.jump),
+                                     v.lambda[0],
+                                     V::tangential(v.lambda)};
           if (dim == 3)
             row.insert(row.end(), {v.jump[1], v.jump[dim - 1], v.lambda[1], v.lambda[dim - 1]});
           row.insert(row.end(), {static_cast<double>(v.state), v.friction});
@@ -117,17 +133,17 @@ namespace porofrac
       geometry::write_data_out(data_out, filename, format);
     }
 
-#define POROFRAC_INSTANTIATE_FRACTURE_FIELDS(dim)                                           \
-  template ContactFaceValues<dim> contact_face_values(const ContactProblem<dim> &,          \
-                                                      const unsigned int);                  \
-  template void                   append_contact_fields(const ContactProblem<dim> &,        \
-                                                        geometry::FractureFields &);        \
-  template void                   write_fracture_table_rows(std::ostream &,                 \
-                                                            const ContactProblem<dim> &,    \
-                                                            const std::vector<double> *,    \
-                                                            const double *);            \
-  template void write_displacement(const ContactProblem<dim> &,                            \
-                                   const std::string &,                                    \
+#define POROFRAC_INSTANTIATE_FRACTURE_FIELDS(dim)                                               \
+  template FaceStateCounts        count_states(const ContactProblem<dim> &, const int);         \
+  template ContactFaceValues<dim> contact_face_values(const ContactProblem<dim> &,              \
+                                                      const unsigned int);                      \
+  template void append_contact_fields(const ContactProblem<dim> &, geometry::FractureFields &); \
+  template void write_fracture_table_rows(std::ostream &,                                       \
+                                          const ContactProblem<dim> &,                          \
+                                          const std::vector<double> *,                          \
+                                          const double *);                                      \
+  template void write_displacement(const ContactProblem<dim> &,                                 \
+                                   const std::string &,                                         \
                                    const std::string &);
     POROFRAC_INSTANTIATE_FRACTURE_FIELDS(2)
     POROFRAC_INSTANTIATE_FRACTURE_FIELDS(3)

@@ -11,7 +11,8 @@ namespace porofrac
   {
     void
     FrictionLaw::parse_parameters(const dealii::ParameterHandler &)
-    {}
+    {
+    }
 
 
 

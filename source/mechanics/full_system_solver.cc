@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/timer.h>
+
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
@@ -13,9 +14,10 @@ namespace porofrac
     template <int dim>
     FullSystemSolver<dim>::FullSystemSolver(const ElasticitySystem<dim> &system,
                                             const ContactParameters     &parameters)
-      : system(system)
-      , reuse_iterations(parameters.reuse_iterations)
-    {}
+        : system(system)
+        , reuse_iterations(parameters.reuse_iterations)
+    {
+    }
 
 
 
@@ -60,8 +62,8 @@ namespace porofrac
     bool
     FullSystemSolver<dim>::try_gmres_on_old_factors(const Vector<double> &rhs, Vector<double> &x)
     {
-      Timer         clock;
-      SolverControl control(reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
+      Timer                       clock;
+      SolverControl               control(reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
       SolverGMRES<Vector<double>> gmres(
         control, SolverGMRES<Vector<double>>::AdditionalData(reuse_iterations + 2, true));
       x         = 0;
@@ -73,7 +75,8 @@ namespace porofrac
           ++this->stats.reused_factorizations;
         }
       catch (const SolverControl::NoConvergence &)
-        {}
+        {
+        }
       this->stats.time_solves += clock.wall_time();
       return done;
     }
@@ -118,8 +121,8 @@ namespace porofrac
                                  Vector<double>       &x)
     {
       // The Jacobian depends on the face rows only: while none changed, the factors are exact.
-      const bool same_matrix = factorization && rows.lambda == factorized_rows.lambda &&
-                               rows.jump == factorized_rows.jump;
+      const bool same_matrix =
+        factorization && rows.lambda == factorized_rows.lambda && rows.jump == factorized_rows.jump;
       if (same_matrix)
         {
           Timer clock;
@@ -144,19 +147,19 @@ namespace porofrac
         "row changed.";
     } // namespace
 
-    POROFRAC_REGISTER(
-      ContactLinearSolverRegistry<2>,
-      "full system",
-      description,
-      [](const ElasticitySystem<2> &s, const ContactParameters &p, ConditionalOStream &, TimerOutput &) {
-        return std::make_unique<FullSystemSolver<2>>(s, p);
-      })
-    POROFRAC_REGISTER(
-      ContactLinearSolverRegistry<3>,
-      "full system",
-      description,
-      [](const ElasticitySystem<3> &s, const ContactParameters &p, ConditionalOStream &, TimerOutput &) {
-        return std::make_unique<FullSystemSolver<3>>(s, p);
-      })
+    POROFRAC_REGISTER(ContactLinearSolverRegistry<2>,
+                      "full system",
+                      description,
+                      [](const ElasticitySystem<2> &s,
+                         const ContactParameters   &p,
+                         ConditionalOStream &,
+                         TimerOutput &) { return std::make_unique<FullSystemSolver<2>>(s, p); })
+    POROFRAC_REGISTER(ContactLinearSolverRegistry<3>,
+                      "full system",
+                      description,
+                      [](const ElasticitySystem<3> &s,
+                         const ContactParameters   &p,
+                         ConditionalOStream &,
+                         TimerOutput &) { return std::make_unique<FullSystemSolver<3>>(s, p); })
   } // namespace mechanics
 } // namespace porofrac

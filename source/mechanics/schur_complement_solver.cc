@@ -25,7 +25,7 @@ namespace porofrac
         SchurComplementSolver(const ElasticitySystem<dim> &system,
                               ConditionalOStream          &progress,
                               TimerOutput                 &timer)
-          : system(system)
+            : system(system)
         {
           TimerOutput::Scope t(timer, "Mechanics: Schur complement setup");
           const unsigned int n_u = system.n_displacement_dofs();

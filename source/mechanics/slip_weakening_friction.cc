@@ -75,11 +75,12 @@ namespace porofrac
       };
     } // namespace
 
-    POROFRAC_REGISTER(FrictionLawRegistry,
-                      "slip weakening",
-                      "F = F_d + (F0 - F_d) max(0, 1 - |[u]_tau| / D_c), F0 the Friction "
-                      "coefficient, F_d and D_c the entries below (linear slip weakening).",
-                      [] { return std::make_unique<SlipWeakeningFriction>(); },
-                      SlipWeakeningFriction::declare_parameters)
+    POROFRAC_REGISTER(
+      FrictionLawRegistry,
+      "slip weakening",
+      "F = F_d + (F0 - F_d) max(0, 1 - |[u]_tau| / D_c), F0 the Friction "
+      "coefficient, F_d and D_c the entries below (linear slip weakening).",
+      [] { return std::make_unique<SlipWeakeningFriction>(); },
+      SlipWeakeningFriction::declare_parameters)
   } // namespace mechanics
 } // namespace porofrac

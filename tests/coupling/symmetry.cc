@@ -7,8 +7,8 @@
 // gas arrives, the upper parts of the arms open and the lower parts slip. The mesh itself is
 // mirror-symmetric (gmsh periodic surfaces through a reflection; vertex coordinates agree to
 // ~1e-12), so after 11 coupled steps (600 s) the fields at mirrored places must agree to
-// round-off. The test builds the coupled problem as coupling::run_scene does (same inner flow
-// tolerances, same time loop) but drives coupling::Poromechanics itself, to read the matrix
+// round-off. The test builds the coupled problem as app::run_poromechanics_scene does (same inner
+// flow tolerances, same time loop) but drives coupling::Poromechanics itself, to read the matrix
 // fields. Each fracture face and each matrix cell is paired with the one whose centre is its
 // mirror image, and compared:
 //   fracture faces: [u]_n, lambda_n, aperture, p_w, p_nw, s_nw, p_E equal; the tangential jump
@@ -152,7 +152,7 @@ main(int argc, char **argv)
   TimerOutput                  timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
   coupling::CouplingParameters coupling_parameters;
   coupling_parameters.parse_parameters(prm);
-  // As coupling::run_scene: tight inner flow solves.
+  // As app::run_poromechanics_scene: tight inner flow solves.
   flow::FlowParameters flow_parameters;
   flow_parameters.parse_parameters(prm);
   flow::FlowModel<2> flow =
@@ -171,8 +171,8 @@ main(int argc, char **argv)
   coupling::Poromechanics<2> pm(mech, flow, coupling_parameters, quiet, timer);
   pm.initialize();
 
-  // The time loop of coupling::run_scene: dt grows by the factor up to the maximum step, and is
-  // halved when a coupled step fails.
+  // The time loop of app::run_poromechanics_scene: dt grows by the factor up to the maximum step,
+  // and is halved when a coupled step fails.
   const flow::TimeStepping &stepping = flow.stepping;
   double                    t = 0, dt = stepping.initial_step;
   unsigned int              steps = 0, cuts = 0;

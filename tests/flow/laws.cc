@@ -70,7 +70,7 @@ main()
             1e-6);
       check("vG inverse", vg.inverse(vg.saturation(pc), "x"), pc, 1e-9 * pc);
     }
-  // Fracture Corey law of 5.3: p_c for s = 1 - 1e-8 (specs.md 1.2).
+  // Fracture Corey law of 5.3: p_c for s = 1 - 1e-8 (doc/algorithms.md §6.1).
   check("Corey fracture inverse",
         make_saturation_law("corey", {{"Corey R", "1e2"}}, fracture_rock)->inverse(1 - 1e-8, "x"),
         1842.068,

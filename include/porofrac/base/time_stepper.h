@@ -46,6 +46,12 @@ namespace porofrac
     {
       return attempt;
     }
+    /// Length of the last accepted step.
+    double
+    last_step_size() const
+    {
+      return last_step;
+    }
     /// Halves the current attempt; false when the step has been cut maximum_cuts times.
     bool
     cut();
@@ -80,7 +86,7 @@ namespace porofrac
     const unsigned int  maximum_cuts;
     std::vector<double> output_times; ///< sorted, those in (0, final_time)
     unsigned int        next_output = 0;
-    double              t = 0, regular = 0, attempt = 0;
+    double              t = 0, regular = 0, attempt = 0, last_step = 0;
     unsigned int        n_steps = 0, n_cuts = 0, last_cuts = 0;
     bool                landed_on_output = false;
     bool                attempt_lands    = false;

@@ -2,7 +2,6 @@
 #ifndef POROFRAC_COUPLING_NEWTON_KRYLOV_H
 #define POROFRAC_COUPLING_NEWTON_KRYLOV_H
 
-#include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/lac/vector.h>
 
@@ -15,7 +14,7 @@ namespace porofrac
   {
     using namespace dealii;
 
-    /// Settings of the fixed-point solvers (deck subsection "Coupling").
+    /// Settings of the fixed-point solvers (deck subsection "Coupling", CouplingParameters).
     struct FixedPointParameters
     {
       /// "newton-krylov" (accelerated) or "fixed point" (plain Picard iterations).
@@ -34,11 +33,6 @@ namespace porofrac
       unsigned int anderson_depth = 5;
       double       ew_gamma       = 0.9;
       double       ew_alpha       = 2.0;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
     };
 
     /// What a fixed-point solve did.

@@ -6,6 +6,9 @@
 
 #include <porofrac/coupling/newton_krylov.h>
 
+#include <string>
+#include <vector>
+
 namespace porofrac
 {
   namespace coupling
@@ -19,7 +22,8 @@ namespace porofrac
       displacement
     };
 
-    /// Deck subsection "Coupling": Biot data of eq. (11d) and the per-step fixed point.
+    /// Deck subsection "Coupling": Biot data of eq. (11d), the per-step fixed point and the
+    /// outputs of coupled scenes.
     struct CouplingParameters
     {
       double biot_coefficient = 1.;  ///< b in [0, 1]
@@ -37,11 +41,18 @@ namespace porofrac
       /// accepted states instead of the last one.
       bool                 extrapolate_initial_guess = false;
       FixedPointParameters fixed_point;
+      /// Times (s, sorted) at which fractures.csv rows and fields are written; the time steps
+      /// land on them.
+      std::vector<double> output_times;
+      /// "none" or "terzaghi": errors against Terzaghi's consolidation at the final time.
+      std::string analytical_solution = "none";
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);
       void
-      parse_parameters(dealii::ParameterHandler &prm);
+      parse_parameters(const dealii::ParameterHandler &prm);
+      void
+      validate() const;
     };
   } // namespace coupling
 } // namespace porofrac

@@ -39,31 +39,6 @@ namespace porofrac
     };
 
     /**
-     * Terms of the discrete energy estimate (19) over one time step t_k -> t_{k+1} (all in J, or
-     * J/rad... per the weights of the axisymmetric measures): the stored energy
-     *   E = sum_K phi_K U_m(p_c,K) |K| + sum_sigma d_f U_f(p_c,sigma) |sigma|
-     *       + 1/2 a(u, u) + sum_K (p_E,K)^2 |K| / (2 M),
-     * the flow dissipation dt sum_alpha sum_c T_c eta^alpha_up (p^alpha_a - p^alpha_b)^2 over
-     * connections between unknown nodes, the frictional work int_Gamma lambda . [u - u_old] >= 0
-     * (eq. (17)), and the work supplied: mechanical loads f_ext . (u - u_old) and Dirichlet flow
-     * boundaries -dt sum_alpha sum_c F^alpha_c p^alpha_b. The inequality is
-     *   E_{k+1} - E_k + dissipation + friction_work <= supplied,
-     * (testing (11a) with p^alpha and (11b) with u - u_old, using the convexity of U).
-     */
-    struct EnergyTerms
-    {
-      double capillary_matrix   = 0;
-      double capillary_fracture = 0;
-      double elastic            = 0;
-      double storage            = 0; ///< sum (p_E)^2 |K| / (2M)
-      double
-      total() const
-      {
-        return capillary_matrix + capillary_fracture + elastic + storage;
-      }
-    };
-
-    /**
      * The coupled problem of the paper's Section 4.2: contact mechanics (11b)-(11c) and two-phase
      * flow (11a) linked by the closure (11d). Each time step solves the fixed point
      * p_E = g_p(p_E) or u = g_u(u) (paper, Section 5 opening) with FixedPointSolver.
@@ -91,28 +66,39 @@ namespace porofrac
       CoupledStepReport
       solve_time_step(const double dt);
 
-      /// Makes the current state the accepted one; returns the energy balance of the step.
+      /// Makes the current state the accepted one.
       void
       accept_time_step();
 
-      /// Stored energy E of (19) at the current state.
-      EnergyTerms
-      energy() const;
-      /// Dissipation + friction work - supplied work of the last solved step (see EnergyTerms).
+      /// Sets the flow state, (u, lambda) and p_E back to the accepted ones (to write the last
+      /// good state after a failed step).
+      void
+      restore_accepted_state();
+
+      /// Porosity (11d) of matrix cell @p K in the current flow state.
       double
-      last_step_dissipation() const
+      matrix_porosity(const unsigned int K) const;
+      /// Displacement and face jumps of the accepted state (the start of the current step).
+      const Vector<double> &
+      accepted_displacement() const
       {
-        return step_dissipation;
+        return u_old;
       }
-      double
-      last_step_friction_work() const
+      const Tensor<1, dim> &
+      accepted_jump(const unsigned int f) const
       {
-        return step_friction_work;
+        return jump_old[f];
       }
-      double
-      last_step_supplied_work() const
+      const CouplingParameters &
+      get_parameters() const
       {
-        return step_supplied_work;
+        return parameters;
+      }
+      /// Length of the last step solved.
+      double
+      time_step() const
+      {
+        return dt;
       }
 
       /// Length-weighted mean of d_f over all fracture faces (paper Fig. 15).
@@ -150,11 +136,6 @@ namespace porofrac
       /// p_E per matrix cell and fracture cell of the current flow state (11d).
       Vector<double>
       flow_equivalent_pressure() const;
-      /// Porosity (11d) of matrix cell @p K in the current flow state.
-      double
-      matrix_porosity(const unsigned int K) const;
-      void
-      compute_step_energy_terms();
 
       const CouplingParameters parameters;
       /// The flow's matrix pore volumes: the Biot storage of (11d) (set by initialize()).
@@ -175,11 +156,11 @@ namespace porofrac
       /// x_old + (dt/dt_old)(x_old - x_older) with Extrapolate initial guess, else x_old.
       Vector<double>
       initial_guess(const Vector<double> &x_old, const Vector<double> &x_older) const;
-      Vector<double>                            u_old; ///< accepted displacement
+      Vector<double>                            u_old;      ///< accepted displacement
+      Vector<double>                            lambda_old; ///< accepted multipliers
       std::vector<Tensor<1, dim>>               jump_old;
       typename flow::TwoPhaseSolver<dim>::State flow_guess;
       CoupledStepReport                         report;
-      double step_dissipation = 0, step_friction_work = 0, step_supplied_work = 0;
     };
   } // namespace coupling
 } // namespace porofrac

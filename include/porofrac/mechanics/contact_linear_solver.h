@@ -4,6 +4,7 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
+
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/base/registry.h>

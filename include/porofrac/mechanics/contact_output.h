@@ -7,6 +7,7 @@
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/mechanics/contact_problem.h>
 
+#include <array>
 #include <ostream>
 #include <vector>
 
@@ -17,6 +18,14 @@ namespace porofrac
     /// "open", "stick" or "slip".
     const char *
     state_name(const FaceState state);
+
+    /// Numbers of open, stick and slip faces (indexed by FaceState).
+    using FaceStateCounts = std::array<unsigned int, 3>;
+
+    /// Face-state counts of the faces of fracture @p fracture_id, or of all faces with -1.
+    template <int dim>
+    FaceStateCounts
+    count_states(const ContactProblem<dim> &problem, const int fracture_id = -1);
 
     /// The contact quantities of one fracture face, in its local frame (n+, t1[, t2]).
     template <int dim>

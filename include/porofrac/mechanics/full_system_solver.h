@@ -49,9 +49,7 @@ namespace porofrac
       bool
       try_gmres_on_old_factors(const Vector<double> &rhs, Vector<double> &x);
       void
-      factorize_and_solve(const FaceRows<dim>  &rows,
-                          const Vector<double> &rhs,
-                          Vector<double>       &x);
+      factorize_and_solve(const FaceRows<dim> &rows, const Vector<double> &rhs, Vector<double> &x);
 
       const ElasticitySystem<dim> &system;
       const unsigned int           reuse_iterations;

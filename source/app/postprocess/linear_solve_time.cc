@@ -27,12 +27,12 @@ namespace porofrac
         void
         execute(SceneView<dim> &scene, io::RunContext &context) override
         {
-          const auto  &system        = scene.mechanics->get_system();
-          const double contact_time  = context.summary["contact_solve_time_s"].as_number();
-          const double lu_time       = time_full_system(system);
-          io::Json    &m             = context.summary["mechanics"];
-          m["linear_solve_time_s"]   = lu_time;
-          m["contact_linear_ratio"]  = contact_time / lu_time;
+          const auto  &system       = scene.mechanics->get_system();
+          const double contact_time = context.summary["contact_solve_time_s"].as_number();
+          const double lu_time      = time_full_system(system);
+          io::Json    &m            = context.summary["mechanics"];
+          m["linear_solve_time_s"]  = lu_time;
+          m["contact_linear_ratio"] = contact_time / lu_time;
           context.progress << "    one linear elasticity solve (UMFPACK): " << lu_time << " s"
                            << std::endl;
           try
@@ -44,7 +44,8 @@ namespace porofrac
               m["contact_linear_ratio_cholesky"] = contact_time / cholesky_time;
             }
           catch (const SolverFailure &)
-            {}
+            {
+            }
         }
 
       private:
@@ -79,8 +80,8 @@ namespace porofrac
         static double
         time_cholesky(const mechanics::ElasticitySystem<dim> &system)
         {
-          Vector<double> x = load(system, system.n_displacement_dofs());
-          Timer          clock;
+          Vector<double>            x = load(system, system.n_displacement_dofs());
+          Timer                     clock;
           mechanics::SparseCholesky cholesky;
           cholesky.factorize(system.get_constrained_matrix(), system.n_displacement_dofs());
           cholesky.solve(x);

@@ -18,9 +18,9 @@ namespace porofrac
        * Errors against the analytical solution of paper Section 5.2.1 (a straight fracture of
        * half length l at angle psi under a remote compression sigma along x, Phan et al. 2003):
        * lambda_n = sigma sin^2 psi and the slip
-       *   |[u]_tau|(tau) = 4 (1 - nu^2) / E sigma sin psi (cos psi - F sin psi) sqrt(l^2 - (l - tau)^2)
-       * (plane strain; doc/algorithms.md explains the prefactor), on the central 90 % of the
-       * fracture (tau in [0.1 l, 1.9 l]), both with the face means and with the paper's P2
+       *   |[u]_tau|(tau) = 4 (1 - nu^2) / E sigma sin psi (cos psi - F sin psi) sqrt(l^2 - (l -
+       * tau)^2) (plane strain; doc/algorithms.md explains the prefactor), on the central 90 % of
+       * the fracture (tau in [0.1 l, 1.9 l]), both with the face means and with the paper's P2
        * reconstructions (4-point Gauss rule per face).
        */
       template <int dim>
@@ -28,17 +28,18 @@ namespace porofrac
       {
       public:
         explicit SingleFractureErrors(const mechanics::ContactParameters &p)
-          : E(p.young_modulus)
-          , nu(p.poisson_ratio)
-          , sigma(p.reports.remote_stress)
-          , psi(p.reports.fracture_angle * numbers::PI / 180.)
-          , ell(p.reports.fracture_half_length)
-        {}
+            : E(p.young_modulus)
+            , nu(p.poisson_ratio)
+            , sigma(p.reports.remote_stress)
+            , psi(p.reports.fracture_angle * numbers::PI / 180.)
+            , ell(p.reports.fracture_half_length)
+        {
+        }
 
         void
         execute(SceneView<dim> &scene, io::RunContext &context) override
         {
-          const auto &problem = *scene.mechanics;
+          const auto &problem    = *scene.mechanics;
           const auto  face_means = face_mean_errors(problem);
           context.report << "Mechanics: 5.2.1 errors (central 90 %, face means): jump_t rel L2 "
                          << std::scientific << std::setprecision(3) << face_means.jump_t

@@ -40,9 +40,10 @@ namespace porofrac
             }
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int k = i; k < dim; ++k)
-              context.report << "Mechanics: stress_" << "xyz"[i] << "xyz"[k] << " in ["
-                             << std::scientific << std::setprecision(4) << smin[i][k] << ", "
-                             << smax[i][k] << "]" << std::defaultfloat << std::endl;
+              context.report << "Mechanics: stress_"
+                             << "xyz"[i] << "xyz"[k] << " in [" << std::scientific
+                             << std::setprecision(4) << smin[i][k] << ", " << smax[i][k] << "]"
+                             << std::defaultfloat << std::endl;
         }
       };
 

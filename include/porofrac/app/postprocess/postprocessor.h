@@ -3,6 +3,10 @@
 #define POROFRAC_APP_POSTPROCESS_POSTPROCESSOR_H
 
 #include <porofrac/base/registry.h>
+#include <porofrac/coupling/parameters.h>
+#include <porofrac/coupling/poromechanics.h>
+#include <porofrac/flow/model.h>
+#include <porofrac/flow/parameters.h>
 #include <porofrac/geometry/cut_mesh.h>
 #include <porofrac/io/run_context.h>
 #include <porofrac/mechanics/contact_problem.h>
@@ -20,6 +24,8 @@ namespace porofrac
     struct PhysicsParameters
     {
       mechanics::ContactParameters mechanics;
+      flow::FlowParameters         flow;
+      coupling::CouplingParameters coupling;
     };
 
     /// What a postprocessor may look at: the mesh and the physics the scene runs (null if
@@ -29,7 +35,11 @@ namespace porofrac
     {
       const geometry::CutMesh<dim>   &mesh;
       const PhysicsParameters        &parameters;
-      mechanics::ContactProblem<dim> *mechanics = nullptr;
+      mechanics::ContactProblem<dim> *mechanics     = nullptr;
+      flow::FlowModel<dim>           *flow          = nullptr;
+      coupling::Poromechanics<dim>   *poromechanics = nullptr;
+      /// Time of the final state (0 for static scenes).
+      double time = 0;
     };
 
     /**

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_APP_POROMECHANICS_SCENE_H
+#define POROFRAC_APP_POROMECHANICS_SCENE_H
+
+#include <porofrac/app/postprocess/postprocessor.h>
+#include <porofrac/geometry/cut_mesh.h>
+#include <porofrac/io/run_context.h>
+
+namespace porofrac
+{
+  namespace app
+  {
+    /**
+     * A "poromechanics" deck: the coupled time loop of the paper's Section 4.2 (contact
+     * mechanics and two-phase flow linked by (11d)), with history.csv per accepted step (the
+     * energy estimate (19) among its columns), fractures.csv rows at t = 0, at the fracture
+     * output times and at the final time, the field series poromechanics-NNNNN +
+     * poromechanics.pvd, and the postprocessors the deck asks for.
+     */
+    template <int dim>
+    void
+    run_poromechanics_scene(const PhysicsParameters      &parameters,
+                            const geometry::CutMesh<dim> &mesh,
+                            io::RunContext               &context);
+  } // namespace app
+} // namespace porofrac
+
+#endif

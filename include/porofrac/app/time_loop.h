@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_APP_TIME_LOOP_H
+#define POROFRAC_APP_TIME_LOOP_H
+
+#include <deal.II/base/conditional_ostream.h>
+
+#include <porofrac/base/time_stepper.h>
+
+#include <functional>
+#include <string>
+
+namespace porofrac
+{
+  namespace app
+  {
+    /// What one attempt at a time step did: converged, or why not.
+    struct StepOutcome
+    {
+      bool        converged = false;
+      std::string failure;
+    };
+
+    /**
+     * The time loop shared by the time-dependent scenes. Per step it calls @p attempt with the
+     * stepper's step size until a step converges, halving the step after each failure; an
+     * attempt starts from the accepted state and must leave it intact when it fails. After a
+     * converged attempt the stepper advances and @p accept records the step. When a step still
+     * fails after the allowed cuts, @p write_last_good writes the accepted state and a
+     * SolverFailure naming @p label, the time and the last failure is thrown.
+     */
+    void
+    run_time_loop(AdaptiveTimeStepper                               &stepper,
+                  const std::string                                 &label,
+                  const std::function<StepOutcome(const double dt)> &attempt,
+                  const std::function<void()>                       &accept,
+                  const std::function<void()>                       &write_last_good,
+                  dealii::ConditionalOStream                        &progress);
+  } // namespace app
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,304 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <porofrac/app/poromechanics_scene.h>
+#include <porofrac/app/time_loop.h>
+#include <porofrac/coupling/energy_estimate.h>
+#include <porofrac/flow/flow_output.h>
+#include <porofrac/io/pvd_writer.h>
+#include <porofrac/mechanics/contact_output.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+
+namespace porofrac
+{
+  namespace app
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      template <int dim>
+      void
+      report_states(std::ostream                         &out,
+                    const mechanics::ContactProblem<dim> &problem,
+                    const std::string                    &when)
+      {
+        for (const unsigned int id : problem.get_mesh().fracture_ids)
+          {
+            const auto c = mechanics::count_states(problem, id);
+            out << "Coupling: " << when << ", fracture " << id << ": open " << c[0] << ", stick "
+                << c[1] << ", slip " << c[2] << std::endl;
+          }
+      }
+
+      /// The cell, fracture and displacement files of the current coupled state.
+      template <int dim>
+      void
+      write_fields(const coupling::Poromechanics<dim> &pm,
+                   const std::string                  &basename,
+                   const std::string                  &format)
+      {
+        const auto          &grid  = *pm.flow.grid;
+        const auto          &mesh  = pm.mechanics.get_mesh();
+        const unsigned int   n     = grid.n_matrix_cells;
+        geometry::CellFields cells = flow::matrix_fields(*pm.flow.solver, grid);
+        Vector<double>       p_E(n), porosity(n);
+        for (unsigned int K = 0; K < n; ++K)
+          {
+            p_E[K]      = pm.equivalent_pressure()[K];
+            porosity[K] = grid.porosity[K];
+          }
+        cells.emplace_back("p_E", p_E);
+        cells.emplace_back("porosity", porosity);
+        geometry::write_cell_fields(mesh, basename, format, cells);
+
+        if (grid.n_fracture_cells > 0)
+          {
+            geometry::FractureFields faces = flow::fracture_fields(*pm.flow.solver, grid);
+            faces.emplace_back("p_E", std::vector<double>());
+            for (unsigned int f = 0; f < grid.n_fracture_cells; ++f)
+              faces.back().second.push_back(pm.equivalent_pressure()[n + f]);
+            mechanics::append_contact_fields(pm.mechanics, faces);
+            geometry::write_fracture_cells(mesh, basename + "_fractures." + format, format, faces);
+          }
+        mechanics::write_displacement(pm.mechanics, basename + "_displacement." + format, format);
+      }
+
+      /// Iteration counts summed over a run (every attempt, failed ones included).
+      struct RunTotals
+      {
+        unsigned int flow = 0, mechanics = 0, coupling = 0, maps = 0, gmres = 0;
+        unsigned int coupling_max_per_step = 0, cuts = 0;
+        double       mass_error_max = 0;
+      };
+
+      const char *history_header =
+        "time,dt,mean_fracture_width,flow_newton_iterations,mechanics_iterations,"
+        "coupling_iterations,time_step_cuts,mass_balance_error,map_evaluations,"
+        "gmres_iterations,n_open,n_stick,n_slip,energy_capillary_matrix,"
+        "energy_capillary_fracture,energy_elastic,energy_storage,flow_dissipation,"
+        "friction_work,supplied_work,energy_inequality_violation\n";
+
+      template <int dim>
+      void
+      write_history_row(std::ostream                       &history,
+                        const AdaptiveTimeStepper          &stepper,
+                        const coupling::Poromechanics<dim> &pm,
+                        const coupling::CoupledStepReport  &r,
+                        const coupling::StepEnergy         &e)
+      {
+        const auto c = mechanics::count_states(pm.mechanics);
+        history << stepper.time() << ',' << stepper.last_step_size() << ','
+                << pm.mean_fracture_width() << ',' << r.flow_newton_iterations << ','
+                << r.mechanics_iterations << ',' << r.coupling_iterations << ','
+                << stepper.last_step_cuts() << ',' << std::max(r.mass_defect[0], r.mass_defect[1])
+                << ',' << r.map_evaluations << ',' << r.gmres_iterations << ',' << c[0] << ','
+                << c[1] << ',' << c[2] << ',' << e.energy.capillary_matrix << ','
+                << e.energy.capillary_fracture << ',' << e.energy.elastic << ',' << e.energy.storage
+                << ',' << e.dissipation << ',' << e.friction_work << ',' << e.supplied_work << ','
+                << e.violation << std::endl;
+      }
+
+      template <int dim>
+      io::Json
+      summarize_mechanics(const coupling::Poromechanics<dim> &pm,
+                          const RunTotals                    &totals,
+                          const unsigned int                  initial_iterations)
+      {
+        const auto &prm               = pm.mechanics.get_parameters();
+        const auto  c                 = mechanics::count_states(pm.mechanics);
+        io::Json    m                 = io::Json::object();
+        m["solver"]                   = prm.method;
+        m["c"]                        = prm.c;
+        m["nonlinear_iterations"]     = totals.mechanics;
+        m["initial_state_iterations"] = initial_iterations;
+        // LU factorizations of the contact system (reused while no face row changes).
+        m["lu_factorizations"] = pm.mechanics.n_factorizations();
+        m["converged"]         = true;
+        m["n_open"]            = c[0];
+        m["n_stick"]           = c[1];
+        m["n_slip"]            = c[2];
+        return m;
+      }
+
+      template <int dim>
+      void
+      report_run(const coupling::Poromechanics<dim> &pm,
+                 const AdaptiveTimeStepper          &stepper,
+                 const RunTotals                    &totals,
+                 const double                        violation_max,
+                 std::ostream                       &report)
+      {
+        report_states(report, pm.mechanics, "final time");
+        report << "Coupling: " << stepper.step_number() << " time steps, " << totals.cuts
+               << " time-step cuts, final time " << std::scientific << std::setprecision(4)
+               << stepper.time() << " s" << std::endl
+               << "Coupling: final mean fracture width " << pm.mean_fracture_width() << " m"
+               << std::defaultfloat << std::endl
+               << "Coupling: iterations: coupling " << totals.coupling << ", map evaluations "
+               << totals.maps << ", flow Newton " << totals.flow << ", mechanics "
+               << totals.mechanics << std::endl
+               << "Coupling: mass balance error per step below 1e-10: "
+               << (totals.mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl
+               << "Coupling: energy inequality (19) holds at every step: "
+               << (violation_max <= 1e-6 ? "yes" : "NO") << std::endl;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    run_poromechanics_scene(const PhysicsParameters      &parameters,
+                            const geometry::CutMesh<dim> &mesh,
+                            io::RunContext               &context)
+    {
+      const coupling::CouplingParameters &cp = parameters.coupling;
+      // Inside coupled iterations the flow Newton must be converged tightly (see
+      // CouplingParameters); the deck's tolerances are the upper bounds.
+      flow::FlowModel<dim> flow =
+        flow::make_flow_model<dim>(parameters.flow, mesh, [&](flow::NewtonParameters &n) {
+          // At its noise floor (kinks of S and of the upwinding), accept an inner solve that meets
+          // the flow deck's own tolerances instead of cutting the step.
+          n.stagnation_update_tolerance = n.update_tolerance;
+          n.stagnation_mass_tolerance   = 1e-10; // the per-step conservation target
+          n.residual_tolerance = std::min(n.residual_tolerance, cp.inner_flow_residual_tolerance);
+          n.update_tolerance   = std::min(n.update_tolerance, cp.inner_flow_update_tolerance);
+        });
+
+      context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
+      mechanics::ContactProblem<dim> mech(mesh,
+                                          parameters.mechanics,
+                                          context.verbose,
+                                          context.timer);
+      mech.setup();
+      context.summary["n_dofs_mechanics"] = mech.n_dofs();
+      context.summary["n_unknowns_flow"]  = flow.solver->n_unknowns();
+      context.report << "Coupling: " << mech.n_dofs() << " mechanics dofs, "
+                     << flow.solver->n_unknowns() << " flow unknowns, " << flow.grid->n_matrix_cells
+                     << " matrix cells, " << flow.grid->n_fracture_cells << " fracture cells"
+                     << std::endl;
+
+      coupling::Poromechanics<dim> pm(mech, flow, cp, context.verbose, context.timer);
+      context.progress << "*** Poromechanics: initial state" << std::endl;
+      pm.initialize();
+      const unsigned int initial_mechanics_iterations = mech.statistics().iterations;
+      report_states(context.report, mech, "t = 0");
+      context.report << "Coupling: t = 0, mean fracture width " << std::scientific
+                     << std::setprecision(4) << pm.mean_fracture_width() << " m"
+                     << std::defaultfloat << std::endl;
+
+      std::ofstream fractures(context.path("fractures.csv"));
+      check_input(bool(fractures), "Output/Directory", "cannot write fractures.csv");
+      mechanics::write_fracture_table_header(fractures, dim, true);
+      double t = 0;
+      mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
+
+      std::ofstream history(context.path("history.csv"));
+      check_input(bool(history), "Output/Directory", "cannot write history.csv");
+      history << history_header << std::setprecision(10);
+
+      io::PvdWriter pvd(context.path("poromechanics.pvd"));
+      const auto    output = [&](const unsigned int step, const double time) {
+        if (context.output_format == "none")
+          return;
+        TimerOutput::Scope timer(context.timer, "Coupling: output");
+        const std::string  name = "poromechanics-" + Utilities::int_to_string(step, 5);
+        write_fields(pm, context.path(name), context.output_format);
+        pvd.add(time, name + "." + context.output_format);
+      };
+      output(0, 0.);
+
+      const flow::TimeStepping     &ts = flow.stepping;
+      AdaptiveTimeStepper           stepper(ts.final_time,
+                                  ts.initial_step,
+                                  ts.maximum_step,
+                                  ts.growth,
+                                  ts.maximum_cuts,
+                                  cp.output_times);
+      coupling::EnergyEstimate<dim> energy(pm);
+      coupling::CoupledStepReport   r;
+      RunTotals                     totals;
+      const auto                    attempt = [&](const double dt) {
+        r = pm.solve_time_step(dt);
+        totals.flow += r.flow_newton_iterations;
+        totals.mechanics += r.mechanics_iterations;
+        totals.maps += r.map_evaluations;
+        totals.gmres += r.gmres_iterations;
+        return StepOutcome{r.converged, r.failure};
+      };
+      const auto accept = [&]() {
+        const unsigned int step = stepper.step_number();
+        t                       = stepper.time();
+        totals.cuts += stepper.last_step_cuts();
+        totals.coupling += r.coupling_iterations;
+        totals.coupling_max_per_step =
+          std::max(totals.coupling_max_per_step, r.coupling_iterations);
+        totals.mass_error_max =
+          std::max({totals.mass_error_max, r.mass_defect[0], r.mass_defect[1]});
+        // (19) compares the new state with the accepted one: record before accepting.
+        const coupling::StepEnergy e = energy.record_step();
+        pm.accept_time_step();
+        write_history_row(history, stepper, pm, r, e);
+        const auto c = mechanics::count_states(mech);
+        context.progress << "  Step " << step << ": t = " << t / 3.15576e7
+                         << " y, dt = " << stepper.last_step_size() << " s, "
+                         << r.coupling_iterations << " coupling, " << r.flow_newton_iterations
+                         << " flow, " << r.mechanics_iterations
+                         << " mechanics iterations; mean width " << pm.mean_fracture_width()
+                         << " m; open/stick/slip " << c[0] << '/' << c[1] << '/' << c[2]
+                         << std::endl;
+        const bool table = stepper.at_output_time() || stepper.finished();
+        if (table)
+          mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
+        if ((ts.output_every > 0 && step % ts.output_every == 0) || table)
+          output(step, t);
+      };
+      const auto write_last_good = [&]() {
+        pm.restore_accepted_state();
+        output(stepper.step_number() + 1, stepper.time());
+      };
+      run_time_loop(stepper, "Coupling", attempt, accept, write_last_good, context.progress);
+
+      report_run(pm, stepper, totals, energy.max_violation(), context.report);
+      context.summary["mechanics"] = summarize_mechanics(pm, totals, initial_mechanics_iterations);
+      io::Json cpl                 = io::Json::object();
+      cpl["fixed_point"] = std::string(cp.variable == coupling::CouplingVariable::displacement ?
+                                         "displacement" :
+                                         "equivalent pressure");
+      cpl["method"]      = cp.fixed_point.method;
+      cpl["iterations"]  = totals.coupling;
+      cpl["iterations_max_per_step"]                     = totals.coupling_max_per_step;
+      cpl["map_evaluations"]                             = totals.maps;
+      cpl["gmres_iterations"]                            = totals.gmres;
+      context.summary["coupling"]                        = cpl;
+      context.summary["n_time_steps"]                    = stepper.step_number();
+      context.summary["final_time"]                      = stepper.time();
+      context.summary["time_step_cuts"]                  = totals.cuts;
+      context.summary["flow_newton_iterations"]          = totals.flow;
+      context.summary["mass_balance_error_max"]          = totals.mass_error_max;
+      context.summary["energy_inequality_violation_max"] = energy.max_violation();
+      context.summary["mean_fracture_width"]             = pm.mean_fracture_width();
+
+      SceneView<dim> scene{mesh, parameters};
+      scene.mechanics     = &mech;
+      scene.flow          = &flow;
+      scene.poromechanics = &pm;
+      scene.time          = stepper.time();
+      run_postprocessors(scene, context);
+    }
+
+    template void
+    run_poromechanics_scene(const PhysicsParameters &,
+                            const geometry::CutMesh<2> &,
+                            io::RunContext &);
+    template void
+    run_poromechanics_scene(const PhysicsParameters &,
+                            const geometry::CutMesh<3> &,
+                            io::RunContext &);
+  } // namespace app
+} // namespace porofrac

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <porofrac/app/time_loop.h>
+#include <porofrac/app/two_phase_flow_scene.h>
+#include <porofrac/flow/flow_output.h>
+#include <porofrac/flow/model.h>
+#include <porofrac/io/pvd_writer.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+
+namespace porofrac
+{
+  namespace app
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /// Ranges of s_nw over the matrix cells and over the fracture cells.
+      template <int dim>
+      void
+      report_saturation_ranges(const flow::FlowModel<dim> &model, std::ostream &report)
+      {
+        const auto &grid        = *model.grid;
+        const auto &solver      = *model.solver;
+        double      range[2][2] = {{1, 0}, {1, 0}};
+        for (unsigned int i = 0; i < grid.n_matrix_cells + grid.n_fracture_cells; ++i)
+          {
+            const bool   fracture = i >= grid.n_matrix_cells;
+            const double s        = solver.saturation(solver.state,
+                                               i,
+                                               fracture ? flow::fracture_rock : flow::matrix_rock);
+            range[fracture][0]    = std::min(range[fracture][0], s);
+            range[fracture][1]    = std::max(range[fracture][1], s);
+          }
+        report << std::scientific << std::setprecision(4) << "Flow: matrix s_nw in [" << range[0][0]
+               << ", " << range[0][1] << "], fracture s_nw in [" << range[1][0] << ", "
+               << range[1][1] << "]" << std::defaultfloat << std::endl;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    run_two_phase_flow_scene(const PhysicsParameters      &parameters,
+                             const geometry::CutMesh<dim> &mesh,
+                             io::RunContext               &context)
+    {
+      flow::FlowModel<dim>       model  = flow::make_flow_model<dim>(parameters.flow, mesh);
+      flow::TpfaGrid<dim>       &grid   = *model.grid;
+      flow::TwoPhaseSolver<dim> &solver = *model.solver;
+      const flow::TimeStepping  &ts     = model.stepping;
+      solver.timer                      = &context.timer;
+
+      context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
+                     << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
+                     << " interface nodes, " << grid.n_intersections << " intersection nodes, "
+                     << solver.n_unknowns() << " unknowns" << std::endl
+                     << "Flow: " << grid.n_non_admissible
+                     << " cell faces with the circumcentre on the wrong side, " << grid.n_fallback
+                     << " non-Delaunay connections (unsigned distances)" << std::endl;
+      context.summary["n_unknowns_flow"] = solver.n_unknowns();
+
+      std::ofstream history(context.path("history.csv"));
+      check_input(bool(history), "Output/Directory", "cannot write history.csv");
+      history << "time,dt,mean_fracture_width,flow_newton_iterations,mechanics_iterations,"
+                 "coupling_iterations,time_step_cuts,mass_balance_error\n"
+              << std::setprecision(10);
+
+      io::PvdWriter pvd(context.path("flow.pvd"));
+      const auto    output = [&](const unsigned int step, const double t) {
+        if (context.output_format == "none")
+          return;
+        TimerOutput::Scope timer(context.timer, "Flow: output");
+        const std::string  name = "flow-" + Utilities::int_to_string(step, 5);
+        geometry::write_cell_fields(mesh,
+                                    context.path(name),
+                                    context.output_format,
+                                    flow::matrix_fields(solver, grid));
+        if (grid.n_fracture_cells > 0)
+          geometry::write_fracture_cells(mesh,
+                                         context.path(name + "_fractures." + context.output_format),
+                                         context.output_format,
+                                         flow::fracture_fields(solver, grid));
+        pvd.add(t, name + "." + context.output_format);
+      };
+      output(0, 0.);
+
+      const auto          initial_volumes = solver.phase_volumes(solver.state);
+      AdaptiveTimeStepper stepper(
+        ts.final_time, ts.initial_step, ts.maximum_step, ts.growth, ts.maximum_cuts);
+      flow::StepResult result;
+      unsigned int     total_newton = 0, max_step_newton = 0, total_cuts = 0;
+      double           mass_error_max = 0;
+      const auto       attempt        = [&](const double dt) {
+        solver.state = solver.old_state;
+        result       = solver.solve_time_step(dt, context.verbose);
+        total_newton += result.iterations;
+        return StepOutcome{result.converged, result.failure};
+      };
+      const auto accept = [&]() {
+        const unsigned int step       = stepper.step_number();
+        const double       t          = stepper.time();
+        const double       mass_error = std::max(result.mass_defect[0], result.mass_defect[1]);
+        mass_error_max                = std::max(mass_error_max, mass_error);
+        max_step_newton               = std::max(max_step_newton, result.iterations);
+        total_cuts += stepper.last_step_cuts();
+        solver.begin_time_step();
+        history << t << ',' << stepper.last_step_size() << ',' << flow::mean_aperture(mesh, grid)
+                << ',' << result.iterations << ",0,0," << stepper.last_step_cuts() << ','
+                << mass_error << std::endl;
+        context.progress << "  Flow step " << step << ": t = " << t
+                         << " s, dt = " << stepper.last_step_size() << " s, " << result.iterations
+                         << " Newton iterations, mass defect " << mass_error << std::endl;
+        if ((ts.output_every > 0 && step % ts.output_every == 0) || stepper.finished())
+          output(step, t);
+      };
+      const auto write_last_good = [&]() {
+        solver.state = solver.old_state;
+        output(stepper.step_number() + 1, stepper.time());
+      };
+      run_time_loop(stepper, "Flow", attempt, accept, write_last_good, context.progress);
+
+      const auto volumes = solver.phase_volumes(solver.state);
+      context.report << "Flow: " << stepper.step_number() << " time steps, " << total_cuts
+                     << " time-step cuts" << std::endl
+                     << std::scientific << std::setprecision(4) << "Flow: final time "
+                     << stepper.time() << " s" << std::endl
+                     << "Flow: pore volume of w " << initial_volumes[0] << " -> " << volumes[0]
+                     << ", of nw " << initial_volumes[1] << " -> " << volumes[1]
+                     << std::defaultfloat << std::endl;
+      report_saturation_ranges(model, context.report);
+      context.report << "Flow: mass balance error per step below 1e-10: "
+                     << (mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl;
+      context.summary["n_time_steps"]                        = stepper.step_number();
+      context.summary["final_time"]                          = stepper.time();
+      context.summary["mass_balance_error_max"]              = mass_error_max;
+      context.summary["flow_newton_iterations"]              = total_newton;
+      context.summary["flow_newton_iterations_max_per_step"] = max_step_newton;
+      context.summary["time_step_cuts"]                      = total_cuts;
+
+      SceneView<dim> scene{mesh, parameters};
+      scene.flow = &model;
+      scene.time = stepper.time();
+      run_postprocessors(scene, context);
+    }
+
+    template void
+    run_two_phase_flow_scene(const PhysicsParameters &,
+                             const geometry::CutMesh<2> &,
+                             io::RunContext &);
+    template void
+    run_two_phase_flow_scene(const PhysicsParameters &,
+                             const geometry::CutMesh<3> &,
+                             io::RunContext &);
+  } // namespace app
+} // namespace porofrac
