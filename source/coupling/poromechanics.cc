@@ -307,11 +307,11 @@ namespace porofrac
       // The porosity reached by the step, (11d), kept for output and Kozeny-Carman.
       for (unsigned int K = 0; K < n_matrix; ++K)
         grid.porosity[K] = matrix_porosity(K);
-      p_E_older = p_E_old;
-      y_older   = y_old;
-      dt_old    = dt;
-      p_E_old   = p_E;
-      y_old     = displacement_measures();
+      p_E_older  = p_E_old;
+      y_older    = y_old;
+      dt_old     = dt;
+      p_E_old    = p_E;
+      y_old      = displacement_measures();
       u_old      = mechanics.displacement();
       lambda_old = mechanics.multipliers();
       for (unsigned int f = 0; f < n_fracture; ++f)
