@@ -7,10 +7,13 @@
 #include <porofrac/app/simulator.h>
 #include <porofrac/base/config.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/interrupt.h>
 #include <porofrac/io/deck.h>
+#include <porofrac/io/run_context.h>
 
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,11 +21,45 @@ namespace
 {
   const char *usage =
     "Usage: porofrac DECK.prm [--set \"Section/Name=value\"]... [--output-dir DIR]\n"
+    "                [--checkpoint-every N | --checkpoint-every Ts] [--restart DIR]\n"
     "       porofrac --print-parameters [prm|md]   every parameter, its default and documentation\n"
     "       porofrac --help | --version\n"
     "\n"
     "Runs the scene described by the input deck DECK.prm and writes summary.json, VTU files and\n"
-    "CSV tables into the output directory (Output/Directory, or DIR).\n";
+    "CSV tables into the output directory (Output/Directory, or DIR).\n"
+    "Time-dependent scenes: --checkpoint-every writes DIR/checkpoint.bin after every N accepted\n"
+    "time steps, or every T seconds of wall time; --restart DIR resumes from DIR/checkpoint.bin\n"
+    "(in DIR, unless --output-dir is given) and ends in the state of an uninterrupted run.\n";
+
+  /// Parses "N" (steps) or "Ts" (seconds of wall time) of --checkpoint-every.
+  void
+  parse_checkpoint_every(const std::string &text, porofrac::io::RunOptions &options)
+  {
+    using porofrac::InputError;
+    try
+      {
+        std::size_t used = 0;
+        if (!text.empty() && text.back() == 's')
+          {
+            options.checkpoint_every_seconds = std::stod(text.substr(0, text.size() - 1), &used);
+            if (used + 1 == text.size() && options.checkpoint_every_seconds > 0)
+              return;
+          }
+        else
+          {
+            const long n                   = std::stol(text, &used);
+            options.checkpoint_every_steps = static_cast<unsigned int>(n);
+            if (used == text.size() && n > 0 && n < 1000000000)
+              return;
+          }
+      }
+    catch (const std::exception &)
+      {
+      }
+    throw InputError("--checkpoint-every",
+                     "'" + text +
+                       "' is neither a positive number of steps (N) nor of seconds (Ts)");
+  }
 
   /// Writes the parameter list as Markdown (doc/parameters.md is generated from it).
   void
@@ -42,6 +79,7 @@ main(int argc, char **argv)
   std::vector<std::string> args(argv + 1, argv + argc);
   std::string              deck_path, output_dir;
   std::vector<std::string> overrides;
+  io::RunOptions           options;
   try
     {
       for (std::size_t i = 0; i < args.size(); ++i)
@@ -68,12 +106,20 @@ main(int argc, char **argv)
                 prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
               return 0;
             }
-          else if (a == "--set" || a == "--output-dir")
+          else if (a == "--set" || a == "--output-dir" || a == "--checkpoint-every" ||
+                   a == "--restart")
             {
               if (i + 1 >= args.size())
                 throw InputError(a, "needs a value");
-              (a == "--set" ? overrides.push_back(args[i + 1]) : void(output_dir = args[i + 1]));
-              ++i;
+              const std::string &value = args[++i];
+              if (a == "--set")
+                overrides.push_back(value);
+              else if (a == "--output-dir")
+                output_dir = value;
+              else if (a == "--restart")
+                options.restart_directory = value;
+              else
+                parse_checkpoint_every(value, options);
             }
           else if (a.rfind("--set=", 0) == 0)
             overrides.push_back(a.substr(6));
@@ -102,12 +148,24 @@ main(int argc, char **argv)
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      dealii::ParameterHandler                 prm;
+      install_interrupt_handlers();
+      dealii::ParameterHandler prm;
       app::declare_all_parameters(prm);
       io::Deck deck(prm);
       deck.read(deck_path);
       for (const auto &o : overrides)
         deck.set(o);
+      // Parameters of a physics the scene does not run: one warning per subsection.
+      std::map<std::string, unsigned int> unused;
+      for (const std::string &p :
+           app::unused_parameters(deck.assigned_entries(), prm.get("Physics")))
+        ++unused[p.substr(0, p.find('/'))];
+      for (const auto &[section, n] : unused)
+        std::cerr << "porofrac: warning: deck '" << deck_name << "': subsection '" << section
+                  << "' (" << n << " parameter" << (n > 1 ? "s" : "")
+                  << " set) is not used by Physics = " << prm.get("Physics") << std::endl;
+      if (output_dir.empty() && !options.restart_directory.empty())
+        output_dir = options.restart_directory;
       if (output_dir.empty())
         {
           prm.enter_subsection("Output");
@@ -115,15 +173,22 @@ main(int argc, char **argv)
           prm.leave_subsection();
         }
       if (prm.get_integer("Dimension") == 2)
-        app::run_scene<2>(prm, deck_path, output_dir, std::cout);
+        app::run_scene<2>(prm, deck_path, output_dir, std::cout, options);
       else
-        app::run_scene<3>(prm, deck_path, output_dir, std::cout);
+        app::run_scene<3>(prm, deck_path, output_dir, std::cout, options);
     }
   catch (const InputError &e)
     {
       std::cout.flush();
       std::cerr << "porofrac: error in deck '" << deck_name << "': " << e.what() << std::endl;
       return 1;
+    }
+  catch (const Interrupted &e)
+    {
+      std::cout.flush();
+      std::cerr << "porofrac: run of deck '" << deck_name << "' interrupted: " << e.what()
+                << std::endl;
+      return 128 + interrupt_signal();
     }
   catch (const SolverFailure &e)
     {
@@ -136,6 +201,13 @@ main(int argc, char **argv)
     {
       std::cout.flush();
       std::cerr << "porofrac: internal error in deck '" << deck_name << "': " << e.what()
+                << std::endl;
+      return 4;
+    }
+  catch (...)
+    {
+      std::cout.flush();
+      std::cerr << "porofrac: internal error in deck '" << deck_name << "': unknown exception"
                 << std::endl;
       return 4;
     }

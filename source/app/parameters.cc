@@ -6,6 +6,8 @@
 #include <porofrac/io/output_parameters.h>
 #include <porofrac/mechanics/parameters.h>
 
+#include <map>
+
 namespace porofrac
 {
   namespace app
@@ -31,6 +33,29 @@ namespace porofrac
       mechanics::ContactParameters::declare_parameters(prm);
       flow::FlowParameters::declare_parameters(prm);
       coupling::CouplingParameters::declare_parameters(prm);
+    }
+
+
+
+    std::vector<std::string>
+    unused_parameters(const std::set<std::string> &assigned, const std::string &physics)
+    {
+      // The physics subsections each Physics reads (Geometry, Output and the top level: all).
+      const std::map<std::string, std::set<std::string>> reads = {
+        {"mesh only", {}},
+        {"contact mechanics", {"Mechanics"}},
+        {"two-phase flow", {"Flow"}},
+        {"poromechanics", {"Mechanics", "Flow", "Coupling"}}};
+      const std::set<std::string> physics_sections = {"Mechanics", "Flow", "Coupling"};
+      const auto                  it               = reads.find(physics);
+      std::vector<std::string>    unused;
+      for (const std::string &path : assigned)
+        {
+          const std::string section = path.substr(0, path.find('/'));
+          if (it != reads.end() && physics_sections.count(section) && !it->second.count(section))
+            unused.push_back(path);
+        }
+      return unused;
     }
   } // namespace app
 } // namespace porofrac

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <porofrac/app/checkpointing.h>
 #include <porofrac/app/poromechanics_scene.h>
 #include <porofrac/app/time_loop.h>
 #include <porofrac/coupling/energy_estimate.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace porofrac
 {
@@ -74,6 +76,36 @@ namespace porofrac
         unsigned int flow = 0, mechanics = 0, coupling = 0, maps = 0, gmres = 0;
         unsigned int coupling_max_per_step = 0, cuts = 0;
         double       mass_error_max = 0;
+
+        void
+        save(io::CheckpointWriter &w) const
+        {
+          w.put("iterations",
+                std::vector<double>{double(flow),
+                                    double(mechanics),
+                                    double(coupling),
+                                    double(maps),
+                                    double(gmres),
+                                    double(coupling_max_per_step),
+                                    double(cuts),
+                                    mass_error_max});
+        }
+
+        void
+        load(io::CheckpointReader &r)
+        {
+          std::vector<double> v;
+          r.get("iterations", v);
+          check_input(v.size() == 8, "--restart", "malformed checkpoint");
+          flow                  = v[0];
+          mechanics             = v[1];
+          coupling              = v[2];
+          maps                  = v[3];
+          gmres                 = v[4];
+          coupling_max_per_step = v[5];
+          cuts                  = v[6];
+          mass_error_max        = v[7];
+        }
       };
 
       const char *history_header =
@@ -192,16 +224,7 @@ namespace porofrac
                      << std::setprecision(4) << pm.mean_fracture_width() << " m"
                      << std::defaultfloat << std::endl;
 
-      std::ofstream fractures(context.path("fractures.csv"));
-      check_input(bool(fractures), "Output/Directory", "cannot write fractures.csv");
-      mechanics::write_fracture_table_header(fractures, dim, true);
-      double t = 0;
-      mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
-
-      std::ofstream history(context.path("history.csv"));
-      check_input(bool(history), "Output/Directory", "cannot write history.csv");
-      history << history_header << std::setprecision(10);
-
+      int           last_written = -1; // step of the last field files
       io::PvdWriter pvd(context.path("poromechanics.pvd"));
       const auto    output = [&](const unsigned int step, const double time) {
         if (context.output_format == "none")
@@ -210,8 +233,8 @@ namespace porofrac
         const std::string  name = "poromechanics-" + Utilities::int_to_string(step, 5);
         write_fields(pm, context.path(name), context.output_format);
         pvd.add(time, name + "." + context.output_format);
+        last_written = step;
       };
-      output(0, 0.);
 
       const flow::TimeStepping     &ts = flow.stepping;
       AdaptiveTimeStepper           stepper(ts.final_time,
@@ -223,7 +246,35 @@ namespace porofrac
       coupling::EnergyEstimate<dim> energy(pm);
       coupling::CoupledStepReport   r;
       RunTotals                     totals;
-      const auto                    attempt = [&](const double dt) {
+      Checkpointing                 checkpoints(
+        context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"});
+      const auto save = [&](io::CheckpointWriter &w) {
+        pm.save(w);
+        energy.save(w);
+        totals.save(w);
+        w.put("last written step", static_cast<unsigned int>(last_written + 1));
+      };
+      if (checkpoints.restarting())
+        checkpoints.restore([&](io::CheckpointReader &c) {
+          pm.load(c);
+          energy.load(c);
+          totals.load(c);
+          unsigned int written = 0;
+          c.get("last written step", written);
+          last_written = int(written) - 1;
+        });
+      else
+        output(0, 0.);
+      std::ostringstream fractures_header;
+      mechanics::write_fracture_table_header(fractures_header, dim, true);
+      std::ofstream &fractures = checkpoints.text_file("fractures.csv", fractures_header.str());
+      double         t         = stepper.time();
+      if (!checkpoints.restarting())
+        mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
+      std::ofstream &history = checkpoints.text_file("history.csv", history_header);
+      history << std::setprecision(10);
+
+      const auto attempt = [&](const double dt) {
         r = pm.solve_time_step(dt);
         totals.flow += r.flow_newton_iterations;
         totals.mechanics += r.mechanics_iterations;
@@ -257,12 +308,17 @@ namespace porofrac
           mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
         if ((ts.output_every > 0 && step % ts.output_every == 0) || table)
           output(step, t);
+        checkpoints.after_step(save);
       };
-      const auto write_last_good = [&]() {
-        pm.restore_accepted_state();
-        output(stepper.step_number() + 1, stepper.time());
+      const auto write_accepted_state = [&](const bool restore_first) {
+        if (restore_first)
+          pm.restore_accepted_state();
+        if (last_written != int(stepper.step_number()))
+          output(stepper.step_number(), stepper.time());
+        if (!restore_first)
+          checkpoints.write(save);
       };
-      run_time_loop(stepper, "Coupling", attempt, accept, write_last_good, context.progress);
+      run_time_loop(stepper, "Coupling", attempt, accept, write_accepted_state, context.progress);
 
       report_run(pm, stepper, totals, energy.max_violation(), context.report);
       context.summary["mechanics"] = summarize_mechanics(pm, totals, initial_mechanics_iterations);

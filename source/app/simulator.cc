@@ -13,6 +13,7 @@
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/geometry/parameters.h>
+#include <porofrac/io/output_directory.h>
 #include <porofrac/io/output_parameters.h>
 #include <porofrac/io/run_context.h>
 
@@ -23,12 +24,63 @@ namespace porofrac
 {
   namespace app
   {
+    namespace
+    {
+      /// Builds and reports the cut mesh, then runs the physics the deck asks for.
+      template <int dim>
+      void
+      build_and_run(dealii::ParameterHandler    &prm,
+                    const std::filesystem::path &deck,
+                    const std::string           &physics,
+                    io::RunContext              &context)
+      {
+        using namespace dealii;
+        geometry::GeometryParameters geometry_parameters;
+        geometry_parameters.parse_parameters(prm, deck.parent_path().string());
+        context.progress << "*** Building the cut mesh" << std::endl;
+        std::unique_ptr<geometry::CutMesh<dim>> mesh;
+        {
+          TimerOutput::Scope t(context.timer, "Geometry: mesh generation and cut");
+          mesh = geometry::make_cut_mesh<dim>(geometry_parameters);
+        }
+        report_mesh(*mesh, context);
+        context.summary["n_cells"] = mesh->triangulation.n_active_cells();
+        context.summary["n_fracture_faces"] =
+          static_cast<unsigned int>(mesh->fracture_faces.size());
+        context.summary["n_dofs_mechanics"] = 0;
+        context.summary["n_unknowns_flow"]  = 0;
+        {
+          TimerOutput::Scope t(context.timer, "Output: mesh");
+          geometry::write_mesh(*mesh, context.path("mesh"), context.output_format);
+        }
+
+        // Every physics parameter set the scene uses is parsed (and validated) once, here.
+        PhysicsParameters physics_parameters;
+        if (physics == "contact mechanics" || physics == "poromechanics")
+          physics_parameters.mechanics.parse_parameters(prm, dim);
+        if (physics == "two-phase flow" || physics == "poromechanics")
+          physics_parameters.flow.parse_parameters(prm);
+        if (physics == "poromechanics")
+          physics_parameters.coupling.parse_parameters(prm);
+
+        if (physics == "contact mechanics")
+          run_contact_mechanics_scene(physics_parameters, *mesh, context);
+        else if (physics == "two-phase flow")
+          run_two_phase_flow_scene(physics_parameters, *mesh, context);
+        else if (physics == "poromechanics")
+          run_poromechanics_scene(physics_parameters, *mesh, context);
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     run_scene(dealii::ParameterHandler &prm,
               const std::string        &deck_path,
               const std::string        &output_directory,
-              std::ostream             &report)
+              std::ostream             &report,
+              const io::RunOptions     &options)
     {
       using namespace dealii;
       Timer                       wall_clock;
@@ -44,11 +96,22 @@ namespace porofrac
       const std::string verbosity    = output.verbosity;
       const bool        print_timers = output.timer_summary && verbosity != "quiet";
 
+      const bool time_dependent = physics == "two-phase flow" || physics == "poromechanics";
+      check_input(time_dependent || options.restart_directory.empty(),
+                  "--restart",
+                  "only time-dependent scenes (two-phase flow, poromechanics) can be resumed");
+      check_input(time_dependent ||
+                    (options.checkpoint_every_steps == 0 && options.checkpoint_every_seconds == 0),
+                  "--checkpoint-every",
+                  "only time-dependent scenes (two-phase flow, poromechanics) write checkpoints");
+      // A run that resumes in the directory of its checkpoint keeps the files written so far.
       std::error_code ec;
-      std::filesystem::create_directories(output_directory, ec);
-      check_input(std::filesystem::is_directory(output_directory),
-                  "--output-dir",
-                  "cannot create the output directory '" + output_directory + "'");
+      const bool      resume_in_place =
+        !options.restart_directory.empty() &&
+        std::filesystem::equivalent(options.restart_directory, output_directory, ec);
+      const io::OutputDirectory directory_lock(output_directory,
+                                               "Output/Directory (or --output-dir)",
+                                               resume_in_place);
 
       ConditionalOStream progress(std::cout, verbosity != "quiet");
       ConditionalOStream verbose(std::cout, verbosity == "verbose");
@@ -65,48 +128,37 @@ namespace porofrac
                              verbose,
                              timer,
                              summary,
-                             format};
+                             format,
+                             options};
 
-      geometry::GeometryParameters geometry_parameters;
-      geometry_parameters.parse_parameters(prm, deck.parent_path().string());
-      progress << "*** Building the cut mesh" << std::endl;
-      std::unique_ptr<geometry::CutMesh<dim>> mesh;
-      {
-        TimerOutput::Scope t(timer, "Geometry: mesh generation and cut");
-        mesh = geometry::make_cut_mesh<dim>(geometry_parameters);
-      }
-      report_mesh(*mesh, context);
-      summary["n_cells"]          = mesh->triangulation.n_active_cells();
-      summary["n_fracture_faces"] = static_cast<unsigned int>(mesh->fracture_faces.size());
-      summary["n_dofs_mechanics"] = 0;
-      summary["n_unknowns_flow"]  = 0;
-      {
-        TimerOutput::Scope t(timer, "Output: mesh");
-        geometry::write_mesh(*mesh, context.path("mesh"), format);
-      }
-
-      // Every physics parameter set the scene uses is parsed (and validated) once, here.
-      PhysicsParameters physics_parameters;
-      if (physics == "contact mechanics" || physics == "poromechanics")
-        physics_parameters.mechanics.parse_parameters(prm, dim);
-      if (physics == "two-phase flow" || physics == "poromechanics")
-        physics_parameters.flow.parse_parameters(prm);
-      if (physics == "poromechanics")
-        physics_parameters.coupling.parse_parameters(prm);
-
-      if (physics == "contact mechanics")
-        run_contact_mechanics_scene(physics_parameters, *mesh, context);
-      else if (physics == "two-phase flow")
-        run_two_phase_flow_scene(physics_parameters, *mesh, context);
-      else if (physics == "poromechanics")
-        run_poromechanics_scene(physics_parameters, *mesh, context);
-
-      summary["wall_time_s"] = wall_clock.wall_time();
-      Utilities::System::MemoryStats memory;
-      Utilities::System::get_memory_stats(memory);
-      summary["peak_memory_mb"] = memory.VmHWM / 1024.;
-      summary.write_file(context.path("summary.json"));
-      progress << "*** Wrote " << context.path("summary.json") << std::endl;
+      // summary.json is written whatever happens after this point: a failed or interrupted
+      // run says so (status and reason) next to the last accepted state its scene wrote.
+      const auto finish = [&](const std::string &status, const std::string &reason) {
+        summary["status"] = status;
+        if (!reason.empty())
+          summary["reason"] = reason;
+        summary["wall_time_s"] = wall_clock.wall_time();
+        Utilities::System::MemoryStats memory;
+        Utilities::System::get_memory_stats(memory);
+        summary["peak_memory_mb"] = memory.VmHWM / 1024.;
+        summary.write_file(context.path("summary.json"));
+        progress << "*** Wrote " << context.path("summary.json") << std::endl;
+      };
+      try
+        {
+          build_and_run<dim>(prm, deck, physics, context);
+        }
+      catch (const SolverFailure &e)
+        {
+          finish("failed", e.what());
+          throw;
+        }
+      catch (const Interrupted &e)
+        {
+          finish("interrupted", e.what());
+          throw;
+        }
+      finish("converged", "");
       if (print_timers)
         timer.print_summary();
     }
@@ -117,11 +169,13 @@ namespace porofrac
     run_scene<2>(dealii::ParameterHandler &,
                  const std::string &,
                  const std::string &,
-                 std::ostream &);
+                 std::ostream &,
+                 const io::RunOptions &);
     template void
     run_scene<3>(dealii::ParameterHandler &,
                  const std::string &,
                  const std::string &,
-                 std::ostream &);
+                 std::ostream &,
+                 const io::RunOptions &);
   } // namespace app
 } // namespace porofrac

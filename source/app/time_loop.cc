@@ -1,42 +1,84 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/time_loop.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/interrupt.h>
 #include <porofrac/io/text.h>
 
 namespace porofrac
 {
   namespace app
   {
-    void
-    run_time_loop(AdaptiveTimeStepper                               &stepper,
-                  const std::string                                 &label,
-                  const std::function<StepOutcome(const double dt)> &attempt,
-                  const std::function<void()>                       &accept,
-                  const std::function<void()>                       &write_last_good,
-                  dealii::ConditionalOStream                        &progress)
+    namespace
     {
+      /// One step: attempts, halving the step after each failure; false after the last cut.
+      bool
+      take_step(AdaptiveTimeStepper                               &stepper,
+                const std::string                                 &label,
+                const std::function<StepOutcome(const double dt)> &attempt,
+                std::string                                       &failure,
+                dealii::ConditionalOStream                        &progress)
+      {
+        while (true)
+          {
+            const StepOutcome outcome = attempt(stepper.step_size());
+            if (outcome.converged)
+              return true;
+            failure             = outcome.failure;
+            const double failed = stepper.step_size();
+            if (!stepper.cut())
+              return false;
+            progress << "    " << label << ": step of " << failed
+                     << " s from t = " << stepper.time() << " s failed (" << failure
+                     << "), halving it to " << stepper.step_size() << " s" << std::endl;
+          }
+      }
+    } // namespace
+
+
+
+    void
+    run_time_loop(AdaptiveTimeStepper                                 &stepper,
+                  const std::string                                   &label,
+                  const std::function<StepOutcome(const double dt)>   &attempt,
+                  const std::function<void()>                         &accept,
+                  const std::function<void(const bool restore_first)> &write_accepted_state,
+                  dealii::ConditionalOStream                          &progress)
+    {
+      const auto at = [&]() { return " at t = " + io::to_text(stepper.time()) + " s"; };
       while (!stepper.finished())
         {
-          StepOutcome outcome = attempt(stepper.step_size());
-          while (!outcome.converged)
+          std::string failure;
+          bool        converged = false;
+          try
             {
-              const double failed = stepper.step_size();
-              if (!stepper.cut())
-                {
-                  write_last_good();
-                  throw SolverFailure(label +
-                                      ": no convergence at t = " + io::to_text(stepper.time()) +
-                                      " s after " + std::to_string(stepper.cuts()) +
-                                      " time-step cuts; last failure: " + outcome.failure +
-                                      ". The last accepted state is written.");
-                }
-              progress << "    " << label << ": step of " << failed
-                       << " s from t = " << stepper.time() << " s failed (" << outcome.failure
-                       << "), halving it to " << stepper.step_size() << " s" << std::endl;
-              outcome = attempt(stepper.step_size());
+              converged = take_step(stepper, label, attempt, failure, progress);
+            }
+          catch (const Interrupted &)
+            {
+              write_accepted_state(true);
+              throw Interrupted(
+                label + ": " + std::string(interrupt_description()) +
+                " received during the step from t = " + io::to_text(stepper.time()) +
+                " s; the last accepted state is written.");
+            }
+          if (!converged)
+            {
+              write_accepted_state(true);
+              throw SolverFailure(label + ": no convergence" + at() + " after " +
+                                  std::to_string(stepper.cuts()) +
+                                  " time-step cuts; last failure: " + failure +
+                                  ". The last accepted state is written.");
             }
           stepper.accept();
           accept();
+          if (interrupt_signal() != 0 && !stepper.finished())
+            {
+              write_accepted_state(false);
+              throw Interrupted(label + ": " + std::string(interrupt_description()) +
+                                " received; stopped after step " +
+                                std::to_string(stepper.step_number()) + at() +
+                                ", which is written.");
+            }
         }
     }
   } // namespace app

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <porofrac/app/checkpointing.h>
 #include <porofrac/app/time_loop.h>
 #include <porofrac/app/two_phase_flow_scene.h>
 #include <porofrac/flow/flow_output.h>
@@ -20,6 +21,38 @@ namespace porofrac
 
     namespace
     {
+      /// What a flow run sums over its steps (every attempt's Newton iterations included).
+      struct FlowTotals
+      {
+        unsigned int          newton = 0, max_step_newton = 0, cuts = 0;
+        double                mass_error_max = 0;
+        std::array<double, 2> initial_volumes{{0., 0.}};
+
+        void
+        save(io::CheckpointWriter &w) const
+        {
+          w.put("Newton iterations", newton);
+          w.put("Newton iterations per step", max_step_newton);
+          w.put("time-step cuts", cuts);
+          w.put("mass balance error", mass_error_max);
+          w.put("initial phase volumes",
+                std::vector<double>(initial_volumes.begin(), initial_volumes.end()));
+        }
+
+        void
+        load(io::CheckpointReader &r)
+        {
+          std::vector<double> volumes;
+          r.get("Newton iterations", newton);
+          r.get("Newton iterations per step", max_step_newton);
+          r.get("time-step cuts", cuts);
+          r.get("mass balance error", mass_error_max);
+          r.get("initial phase volumes", volumes);
+          check_input(volumes.size() == 2, "--restart", "malformed checkpoint");
+          initial_volumes = {{volumes[0], volumes[1]}};
+        }
+      };
+
       /// Ranges of s_nw over the matrix cells and over the fracture cells.
       template <int dim>
       void
@@ -66,12 +99,7 @@ namespace porofrac
                      << " non-Delaunay connections (unsigned distances)" << std::endl;
       context.summary["n_unknowns_flow"] = solver.n_unknowns();
 
-      std::ofstream history(context.path("history.csv"));
-      check_input(bool(history), "Output/Directory", "cannot write history.csv");
-      history << "time,dt,mean_fracture_width,flow_newton_iterations,mechanics_iterations,"
-                 "coupling_iterations,time_step_cuts,mass_balance_error\n"
-              << std::setprecision(10);
-
+      int           last_written = -1; // step of the last field files
       io::PvdWriter pvd(context.path("flow.pvd"));
       const auto    output = [&](const unsigned int step, const double t) {
         if (context.output_format == "none")
@@ -88,28 +116,52 @@ namespace porofrac
                                          context.output_format,
                                          flow::fracture_fields(solver, grid));
         pvd.add(t, name + "." + context.output_format);
+        last_written = step;
       };
-      output(0, 0.);
 
-      const auto          initial_volumes = solver.phase_volumes(solver.state);
       AdaptiveTimeStepper stepper(
         ts.final_time, ts.initial_step, ts.maximum_step, ts.growth, ts.maximum_cuts);
+      FlowTotals    totals;
+      Checkpointing checkpoints(context, "two-phase flow", stepper, pvd, {"history.csv"});
+      totals.initial_volumes = solver.phase_volumes(solver.state);
+      if (checkpoints.restarting())
+        checkpoints.restore([&](io::CheckpointReader &r) {
+          r.expect("flow unknowns", solver.n_unknowns());
+          r.get("flow state", solver.state);
+          totals.load(r);
+          unsigned int written = 0;
+          r.get("last written step", written);
+          last_written = int(written) - 1;
+          solver.begin_time_step();
+        });
+      else
+        output(0, 0.);
+      std::ofstream &history = checkpoints.text_file(
+        "history.csv",
+        "time,dt,mean_fracture_width,flow_newton_iterations,mechanics_iterations,"
+        "coupling_iterations,time_step_cuts,mass_balance_error\n");
+      history << std::setprecision(10);
+
+      const auto save = [&](io::CheckpointWriter &w) {
+        w.put("flow unknowns", solver.n_unknowns());
+        w.put("flow state", solver.state);
+        totals.save(w);
+        w.put("last written step", static_cast<unsigned int>(last_written + 1));
+      };
       flow::StepResult result;
-      unsigned int     total_newton = 0, max_step_newton = 0, total_cuts = 0;
-      double           mass_error_max = 0;
-      const auto       attempt        = [&](const double dt) {
+      const auto       attempt = [&](const double dt) {
         solver.state = solver.old_state;
         result       = solver.solve_time_step(dt, context.verbose);
-        total_newton += result.iterations;
+        totals.newton += result.iterations;
         return StepOutcome{result.converged, result.failure};
       };
       const auto accept = [&]() {
         const unsigned int step       = stepper.step_number();
         const double       t          = stepper.time();
         const double       mass_error = std::max(result.mass_defect[0], result.mass_defect[1]);
-        mass_error_max                = std::max(mass_error_max, mass_error);
-        max_step_newton               = std::max(max_step_newton, result.iterations);
-        total_cuts += stepper.last_step_cuts();
+        totals.mass_error_max         = std::max(totals.mass_error_max, mass_error);
+        totals.max_step_newton        = std::max(totals.max_step_newton, result.iterations);
+        totals.cuts += stepper.last_step_cuts();
         solver.begin_time_step();
         history << t << ',' << stepper.last_step_size() << ',' << flow::mean_aperture(mesh, grid)
                 << ',' << result.iterations << ",0,0," << stepper.last_step_cuts() << ','
@@ -119,15 +171,21 @@ namespace porofrac
                          << " Newton iterations, mass defect " << mass_error << std::endl;
         if ((ts.output_every > 0 && step % ts.output_every == 0) || stepper.finished())
           output(step, t);
+        checkpoints.after_step(save);
       };
-      const auto write_last_good = [&]() {
-        solver.state = solver.old_state;
-        output(stepper.step_number() + 1, stepper.time());
+      const auto write_accepted_state = [&](const bool restore_first) {
+        if (restore_first)
+          solver.state = solver.old_state;
+        if (last_written != int(stepper.step_number()))
+          output(stepper.step_number(), stepper.time());
+        if (!restore_first)
+          checkpoints.write(save);
       };
-      run_time_loop(stepper, "Flow", attempt, accept, write_last_good, context.progress);
+      run_time_loop(stepper, "Flow", attempt, accept, write_accepted_state, context.progress);
 
-      const auto volumes = solver.phase_volumes(solver.state);
-      context.report << "Flow: " << stepper.step_number() << " time steps, " << total_cuts
+      const auto  volumes         = solver.phase_volumes(solver.state);
+      const auto &initial_volumes = totals.initial_volumes;
+      context.report << "Flow: " << stepper.step_number() << " time steps, " << totals.cuts
                      << " time-step cuts" << std::endl
                      << std::scientific << std::setprecision(4) << "Flow: final time "
                      << stepper.time() << " s" << std::endl
@@ -136,13 +194,13 @@ namespace porofrac
                      << std::defaultfloat << std::endl;
       report_saturation_ranges(model, context.report);
       context.report << "Flow: mass balance error per step below 1e-10: "
-                     << (mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl;
+                     << (totals.mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl;
       context.summary["n_time_steps"]                        = stepper.step_number();
       context.summary["final_time"]                          = stepper.time();
-      context.summary["mass_balance_error_max"]              = mass_error_max;
-      context.summary["flow_newton_iterations"]              = total_newton;
-      context.summary["flow_newton_iterations_max_per_step"] = max_step_newton;
-      context.summary["time_step_cuts"]                      = total_cuts;
+      context.summary["mass_balance_error_max"]              = totals.mass_error_max;
+      context.summary["flow_newton_iterations"]              = totals.newton;
+      context.summary["flow_newton_iterations_max_per_step"] = totals.max_step_newton;
+      context.summary["time_step_cuts"]                      = totals.cuts;
 
       SceneView<dim> scene{mesh, parameters};
       scene.flow = &model;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/base/exceptions.h>
 #include <porofrac/coupling/energy_estimate.h>
 
 #include <cmath>
@@ -72,6 +73,31 @@ namespace porofrac
       largest_violation = std::max(largest_violation, s.violation);
       previous          = s.energy;
       return s;
+    }
+
+    template <int dim>
+    void
+    EnergyEstimate<dim>::save(io::CheckpointWriter &c) const
+    {
+      c.put("stored energy",
+            std::vector<double>{previous.capillary_matrix,
+                                previous.capillary_fracture,
+                                previous.elastic,
+                                previous.storage});
+      c.put("largest energy violation", largest_violation);
+    }
+
+
+
+    template <int dim>
+    void
+    EnergyEstimate<dim>::load(io::CheckpointReader &c)
+    {
+      std::vector<double> e;
+      c.get("stored energy", e);
+      check_input(e.size() == 4, "--restart", "malformed checkpoint");
+      previous = {e[0], e[1], e[2], e[3]};
+      c.get("largest energy violation", largest_violation);
     }
 
     template class EnergyEstimate<2>;

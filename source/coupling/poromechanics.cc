@@ -322,6 +322,62 @@ namespace porofrac
 
     template <int dim>
     void
+    Poromechanics<dim>::save(io::CheckpointWriter &c) const
+    {
+      const auto &grid = *flow.grid;
+      c.put("matrix cells", n_matrix);
+      c.put("fracture faces", n_fracture);
+      c.put("p_E", p_E);
+      c.put("accepted p_E", p_E_old);
+      c.put("older p_E", p_E_older);
+      c.put("accepted y", y_old);
+      c.put("older y", y_older);
+      c.put("older step", dt_old);
+      c.put("accepted displacement", u_old);
+      c.put("accepted multipliers", lambda_old);
+      c.put("accepted jumps", jump_old);
+      c.put("flow guess", flow_guess);
+      c.put("flow state", flow.solver->state);
+      c.put("displacement porosity", storage->displacement_porosity());
+      c.put("porosity", grid.porosity);
+      c.put("permeability", grid.permeability);
+      c.put("aperture", grid.aperture);
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::load(io::CheckpointReader &c)
+    {
+      auto &grid = *flow.grid;
+      c.expect("matrix cells", n_matrix);
+      c.expect("fracture faces", n_fracture);
+      c.get("p_E", p_E);
+      c.get("accepted p_E", p_E_old);
+      c.get("older p_E", p_E_older);
+      c.get("accepted y", y_old);
+      c.get("older y", y_older);
+      c.get("older step", dt_old);
+      c.get("accepted displacement", u_old);
+      c.get("accepted multipliers", lambda_old);
+      c.get("accepted jumps", jump_old);
+      c.get("flow guess", flow_guess);
+      c.get("flow state", flow.solver->state);
+      std::vector<double> phi_u;
+      c.get("displacement porosity", phi_u);
+      storage->set_displacement_porosity(phi_u);
+      c.get("porosity", grid.porosity);
+      c.get("permeability", grid.permeability);
+      c.get("aperture", grid.aperture);
+      grid.update_transmissibilities();
+      mechanics.set_state(u_old, lambda_old);
+    }
+
+
+
+    template <int dim>
+    void
     Poromechanics<dim>::restore_accepted_state()
     {
       flow.solver->state = flow.solver->old_state;

@@ -2,6 +2,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/interrupt.h>
 #include <porofrac/flow/two_phase_solver.h>
 
 #include <cmath>
@@ -423,6 +424,7 @@ namespace porofrac
                        state[i][0] + rocks[grid.nodes[i].rock].saturation->entry_pressure());
       for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
         {
+          throw_if_interrupted("in a flow Newton iteration");
           // A non-finite state (initial guess or diverged update) is a failed step.
           for (const auto &p : state)
             if (!std::isfinite(p[0]) || !std::isfinite(p[1]))

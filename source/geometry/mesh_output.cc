@@ -23,8 +23,8 @@ namespace porofrac
                          const FractureFields &extra)
     {
       std::ofstream out(filename);
-      AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
-      out << std::setprecision(12);
+      check_input(bool(out), "Output/Directory", "cannot write '" + filename + "'");
+      out << std::setprecision(17);
       const auto    &faces  = mesh.fracture_faces;
       FractureFields fields = {{"fracture_id", {}},
                                {"face_id", {}},
@@ -133,9 +133,13 @@ namespace porofrac
     write_data_out(DataOut<dim> &data_out, const std::string &filename, const std::string &format)
     {
       std::ofstream out(filename);
-      AssertThrow(out, ExcMessage("cannot write '" + filename + "'"));
+      check_input(bool(out), "Output/Directory", "cannot write '" + filename + "'");
       if (format == "vtk")
-        data_out.write_vtk(out);
+        {
+          // Legacy ASCII VTK: every digit of a double, not the stream's default 6.
+          out << std::setprecision(17);
+          data_out.write_vtk(out);
+        }
       else
         {
           DataOutBase::VtkFlags flags;

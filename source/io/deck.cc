@@ -3,6 +3,7 @@
 #include <porofrac/io/deck.h>
 #include <porofrac/io/text.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -100,6 +101,7 @@ namespace porofrac
         }
       for (unsigned int i = 0; i + 1 < parts.size(); ++i)
         prm.leave_subsection();
+      assigned.insert(path);
       if (!error.empty())
         {
           const std::string pattern = pattern_of(error);
@@ -125,12 +127,44 @@ namespace porofrac
     void
     Deck::read(const std::string &filename)
     {
+      read(filename, {});
+    }
+
+
+
+    void
+    Deck::read(const std::string &filename, std::vector<std::string> including)
+    {
+      namespace fs         = std::filesystem;
+      const std::string me = fs::path(filename).filename().string();
+      std::error_code   ec;
+      if (fs::is_directory(filename, ec))
+        throw InputError("deck", "'" + me + "' is a directory, not a deck file");
       std::ifstream in(filename);
       if (!in)
-        throw InputError("deck", "cannot open '" + filename.substr(filename.rfind('/') + 1) + "'");
+        throw InputError("deck", "cannot open '" + me + "'");
+      // A file that includes itself, directly or through others, would be read forever.
+      const std::string key = fs::weakly_canonical(filename, ec).string();
+      for (const std::string &f : including)
+        if (f == key)
+          throw InputError("deck", "'include " + me + "' forms a cycle of includes");
+      including.push_back(key);
+
+      // Lines of an included file name the file; those of the deck itself only the line.
+      const std::string        prefix = including.size() > 1 ? me + ", " : "";
       std::vector<std::string> path;
       std::string              line, logical;
       unsigned int             line_no = 0, start_line = 0;
+      const auto               statement_done = [&]() {
+        const std::string statement = trim(logical);
+        logical.clear();
+        if (!statement.empty())
+          read_statement(statement,
+                         prefix + "line " + std::to_string(start_line) + ": ",
+                         filename,
+                         path,
+                         including);
+      };
       while (std::getline(in, line))
         {
           ++line_no;
@@ -146,58 +180,75 @@ namespace porofrac
               continue;
             }
           logical += t;
-          const std::string statement = trim(logical);
-          logical.clear();
-          if (statement.empty())
-            continue;
-          const std::string where = "line " + std::to_string(start_line) + ": ";
-          if (statement.rfind("subsection ", 0) == 0)
-            {
-              path.push_back(trim(statement.substr(11)));
-              std::string full = join(path, "");
-              full             = full.substr(0, full.size() - 1);
-              if (!subsections.count(full))
-                throw InputError(full, where + "is not a known subsection");
-            }
-          else if (statement == "end")
-            {
-              if (path.empty())
-                throw InputError("deck", where + "'end' without a matching 'subsection'");
-              path.pop_back();
-            }
-          else if (statement.rfind("set ", 0) == 0)
-            {
-              const auto equal = statement.find('=');
-              if (equal == std::string::npos)
-                throw InputError("deck", where + "expected 'set Name = value'");
-              const std::string name = join(path, trim(statement.substr(4, equal - 4)));
-              try
-                {
-                  set(name, trim(statement.substr(equal + 1)));
-                }
-              catch (const InputError &e)
-                {
-                  throw InputError(e.parameter, where + e.reason);
-                }
-            }
-          else if (statement.rfind("include ", 0) == 0)
-            {
-              // Shared fragments (e.g. a scene's geometry), relative to this deck, top level only.
-              if (!path.empty())
-                throw InputError("deck", where + "'include' is only allowed outside subsections");
-              std::string file  = trim(statement.substr(8));
-              const auto  slash = filename.rfind('/');
-              if (!file.empty() && file[0] != '/' && slash != std::string::npos)
-                file = filename.substr(0, slash + 1) + file;
-              read(file);
-            }
-          else
-            throw InputError("deck",
-                             where + "cannot read '" + statement.substr(0, 40) +
-                               "' (expected 'subsection', 'set' or 'end')");
+          statement_done();
         }
+      // A continued last line is a statement too.
+      statement_done();
       if (!path.empty())
-        throw InputError("deck", "subsection '" + path.back() + "' is not closed with 'end'");
+        throw InputError("deck",
+                         prefix + "subsection '" + path.back() + "' is not closed with 'end'");
+    }
+
+
+
+    void
+    Deck::read_statement(const std::string              &statement,
+                         const std::string              &where,
+                         const std::string              &filename,
+                         std::vector<std::string>       &path,
+                         const std::vector<std::string> &including)
+    {
+      if (statement.rfind("subsection ", 0) == 0)
+        {
+          path.push_back(trim(statement.substr(11)));
+          std::string full = join(path, "");
+          full             = full.substr(0, full.size() - 1);
+          if (!subsections.count(full))
+            throw InputError(full, where + "is not a known subsection");
+        }
+      else if (statement == "end")
+        {
+          if (path.empty())
+            throw InputError("deck", where + "'end' without a matching 'subsection'");
+          path.pop_back();
+        }
+      else if (statement.rfind("set ", 0) == 0)
+        {
+          const auto equal = statement.find('=');
+          if (equal == std::string::npos)
+            throw InputError("deck", where + "expected 'set Name = value'");
+          const std::string name = join(path, trim(statement.substr(4, equal - 4)));
+          try
+            {
+              set(name, trim(statement.substr(equal + 1)));
+            }
+          catch (const InputError &e)
+            {
+              throw InputError(e.parameter, where + e.reason);
+            }
+        }
+      else if (statement.rfind("include ", 0) == 0)
+        {
+          // Shared fragments (e.g. a scene's geometry), relative to this deck, top level only.
+          if (!path.empty())
+            throw InputError("deck", where + "'include' is only allowed outside subsections");
+          std::string file  = trim(statement.substr(8));
+          const auto  slash = filename.rfind('/');
+          if (!file.empty() && file[0] != '/' && slash != std::string::npos)
+            file = filename.substr(0, slash + 1) + file;
+          try
+            {
+              read(file, including);
+            }
+          catch (const InputError &e)
+            {
+              throw InputError(e.parameter, where + e.reason);
+            }
+        }
+      else
+        throw InputError("deck",
+                         where + "cannot read '" + statement.substr(0, 40) +
+                           "' (expected 'subsection', 'set' or 'end')");
     }
   } // namespace io
 } // namespace porofrac

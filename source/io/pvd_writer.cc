@@ -3,6 +3,7 @@
 #include <porofrac/io/pvd_writer.h>
 
 #include <fstream>
+#include <iomanip>
 
 namespace porofrac
 {
@@ -16,10 +17,19 @@ namespace porofrac
 
 
     void
+    PvdWriter::set_entries(const std::vector<std::pair<double, std::string>> &restored)
+    {
+      entries = restored;
+    }
+
+
+
+    void
     PvdWriter::add(const double time, const std::string &file)
     {
       entries.emplace_back(time, file);
       std::ofstream pvd(filename);
+      pvd << std::setprecision(17);
       pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
              "<Collection>\n";
       for (const auto &e : entries)

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/interrupt.h>
 #include <porofrac/mechanics/contact_solver.h>
 
 #include <cmath>
@@ -160,7 +161,12 @@ namespace porofrac
           parts.contact_unscaled += w * law.residual(l, j, false).norm_square();
           parts.lambda += w * l.norm_square();
           parts.c_jump += w * (c * j).norm_square();
+          parts.jump += w * j.norm_square();
+          parts.measure += w;
+          if (law.state(l, j) == FaceState::stick)
+            parts.stick_slip += w * LocalContactLaw<dim>::tangential(j).norm_square();
         }
+      parts.u_max = u.linfty_norm();
       return parts;
     }
 
@@ -183,7 +189,14 @@ namespace porofrac
                                           const Vector<double> &lambda) const
     {
       const ResidualParts r = residual_parts(u, lambda, prm.c);
-      return merit(r, r.lambda > 0 ? r.lambda : r.c_jump);
+      // lambda is the scale of C unless it is zero or round-off against c [u] (every face open:
+      // C = lambda there, so |C| / |lambda| would stay 1 at the exact solution).
+      const double scale2 = r.lambda > 1e-24 * r.c_jump ? r.lambda : r.c_jump;
+      // A stick face may keep a slip of about tol |lambda| / c under the C test alone: bound it
+      // by the problem's own displacement scale, the jumps or else the largest displacement.
+      const double slip_scale2 = std::max(r.jump, r.measure * r.u_max * r.u_max);
+      const double rel_stick   = slip_scale2 > 0 ? std::sqrt(r.stick_slip / slip_scale2) : 0.;
+      return std::max(merit(r, scale2), rel_stick);
     }
 
 
@@ -371,6 +384,7 @@ namespace porofrac
       Timer clock;
       for (stats.iterations = 1; stats.iterations <= prm.max_iterations; ++stats.iterations)
         {
+          throw_if_interrupted("in a contact iteration");
           std::vector<FaceState> states(n_f);
           {
             TimerOutput::Scope t(timer, "Mechanics: contact update");

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace porofrac
@@ -151,12 +152,14 @@ namespace porofrac
                                                        ComponentMask(mask));
             }
           // Point constraints (e.g. the symmetry of 5.2.1): every vertex at the point.
+          std::set<types::global_dof_index> point_constrained;
           for (const PointConstraint &pc : prm.point_constraints)
             {
               Point<dim> p;
               for (unsigned int d = 0; d < dim; ++d)
                 p[d] = pc.point[d];
-              unsigned int hits = 0;
+              unsigned int                      hits = 0;
+              std::set<types::global_dof_index> own; // a vertex is seen from each of its cells
               for (const auto &cell : dof_handler.active_cell_iterators())
                 for (const unsigned int v : cell->vertex_indices())
                   if (cell->vertex(v).distance(p) < tol)
@@ -165,6 +168,12 @@ namespace porofrac
                       for (const auto &[c, e] : pc.values)
                         {
                           const auto dof = cell->vertex_dof_index(v, c);
+                          if (!own.insert(dof).second)
+                            continue;
+                          check_input(!point_constrained.count(dof),
+                                      "Mechanics/Point constraints",
+                                      "component " + std::string(1, "xyz"[c]) + " at " +
+                                        io::to_text(p) + " is constrained twice");
                           if (target->is_constrained(dof))
                             continue;
                           target->add_line(dof);
@@ -175,6 +184,7 @@ namespace porofrac
                                 ->value(p));
                         }
                     }
+              point_constrained.insert(own.begin(), own.end());
               if (hits == 0)
                 {
                   std::ostringstream s;

@@ -24,17 +24,21 @@ namespace porofrac
      * The time loop shared by the time-dependent scenes. Per step it calls @p attempt with the
      * stepper's step size until a step converges, halving the step after each failure; an
      * attempt starts from the accepted state and must leave it intact when it fails. After a
-     * converged attempt the stepper advances and @p accept records the step. When a step still
-     * fails after the allowed cuts, @p write_last_good writes the accepted state and a
-     * SolverFailure naming @p label, the time and the last failure is thrown.
+     * converged attempt the stepper advances and @p accept records the step.
+     *
+     * When a step still fails after the allowed cuts, or the run is interrupted (SIGINT,
+     * SIGTERM: base/interrupt.h) during or between steps, @p write_accepted_state writes the
+     * last accepted state (its argument: whether the scene must first restore it, because an
+     * attempt changed it) and a SolverFailure or Interrupted naming @p label and the time is
+     * thrown.
      */
     void
-    run_time_loop(AdaptiveTimeStepper                               &stepper,
-                  const std::string                                 &label,
-                  const std::function<StepOutcome(const double dt)> &attempt,
-                  const std::function<void()>                       &accept,
-                  const std::function<void()>                       &write_last_good,
-                  dealii::ConditionalOStream                        &progress);
+    run_time_loop(AdaptiveTimeStepper                                 &stepper,
+                  const std::string                                   &label,
+                  const std::function<StepOutcome(const double dt)>   &attempt,
+                  const std::function<void()>                         &accept,
+                  const std::function<void(const bool restore_first)> &write_accepted_state,
+                  dealii::ConditionalOStream                          &progress);
   } // namespace app
 } // namespace porofrac
 

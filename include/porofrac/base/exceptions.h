@@ -39,6 +39,20 @@ namespace porofrac
     }
   };
 
+  /**
+   * The run was asked to stop (SIGINT or SIGTERM, see base/interrupt.h). Time-dependent scenes
+   * throw it between steps, after writing the last accepted state; main() writes summary.json
+   * with status "interrupted".
+   */
+  class Interrupted : public std::runtime_error
+  {
+  public:
+    explicit Interrupted(const std::string &what)
+        : std::runtime_error(what)
+    {
+    }
+  };
+
 /// Throws the InputError @p error unless @p condition holds (the message is built lazily).
 #define POROFRAC_CHECK_INPUT(condition, error) \
   do                                           \

@@ -77,6 +77,43 @@ namespace porofrac
       return landed_on_output;
     }
 
+    /// Everything that changes while stepping, for checkpoints: restore(state()) continues
+    /// exactly where the stepper was.
+    struct State
+    {
+      double       t, regular, attempt, last_step;
+      unsigned int next_output, n_steps, n_cuts, last_cuts;
+      bool         landed_on_output, attempt_lands;
+    };
+    State
+    state() const
+    {
+      return {t,
+              regular,
+              attempt,
+              last_step,
+              next_output,
+              n_steps,
+              n_cuts,
+              last_cuts,
+              landed_on_output,
+              attempt_lands};
+    }
+    void
+    restore(const State &s)
+    {
+      t                = s.t;
+      regular          = s.regular;
+      attempt          = s.attempt;
+      last_step        = s.last_step;
+      next_output      = s.next_output;
+      n_steps          = s.n_steps;
+      n_cuts           = s.n_cuts;
+      last_cuts        = s.last_cuts;
+      landed_on_output = s.landed_on_output;
+      attempt_lands    = s.attempt_lands;
+    }
+
   private:
     /// Proposes the attempt from the regular step: shortened to the next target.
     void

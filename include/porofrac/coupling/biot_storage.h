@@ -41,6 +41,11 @@ namespace porofrac
       /// Sets phi_u = phi_0 + b div(u - u_0) per matrix cell (coupling::displacement_porosity).
       void
       set_displacement_porosity(const std::vector<double> &phi_u);
+      const std::vector<double> &
+      displacement_porosity() const
+      {
+        return phi_u;
+      }
 
       /// phi_K at the absolute wetting pressure @p p_w and capillary pressure @p p_c.
       double

@@ -3,6 +3,7 @@
 #define POROFRAC_COUPLING_ENERGY_ESTIMATE_H
 
 #include <porofrac/coupling/poromechanics.h>
+#include <porofrac/io/checkpoint.h>
 
 namespace porofrac
 {
@@ -66,6 +67,12 @@ namespace porofrac
       /// the next step.
       StepEnergy
       record_step();
+
+      /// The reference energy and the largest violation, for checkpoints.
+      void
+      save(io::CheckpointWriter &checkpoint) const;
+      void
+      load(io::CheckpointReader &checkpoint);
 
       /// Largest violation recorded.
       double

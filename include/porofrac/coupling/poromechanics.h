@@ -11,6 +11,7 @@
 #include <porofrac/coupling/newton_krylov.h>
 #include <porofrac/coupling/parameters.h>
 #include <porofrac/flow/model.h>
+#include <porofrac/io/checkpoint.h>
 #include <porofrac/mechanics/contact_problem.h>
 
 #include <array>
@@ -69,6 +70,13 @@ namespace porofrac
       /// Makes the current state the accepted one.
       void
       accept_time_step();
+
+      /// Writes the state between two time steps (accepted and older states, the flow inputs
+      /// and the flow state) to a checkpoint; load() restores it exactly, after initialize().
+      void
+      save(io::CheckpointWriter &checkpoint) const;
+      void
+      load(io::CheckpointReader &checkpoint);
 
       /// Sets the flow state, (u, lambda) and p_E back to the accepted ones (to write the last
       /// good state after a failed step).

@@ -45,10 +45,31 @@ namespace porofrac
         return entries;
       }
 
+      /// The entry paths that the deck or an override set.
+      const std::set<std::string> &
+      assigned_entries() const
+      {
+        return assigned;
+      }
+
     private:
+      /// Reads @p filename, included from the files @p including (canonical paths, outermost
+      /// first).
+      void
+      read(const std::string &filename, std::vector<std::string> including);
+      /// Carries out one statement (continued lines joined) of @p filename; @p where locates it
+      /// for error messages, @p path is the current subsection.
+      void
+      read_statement(const std::string              &statement,
+                     const std::string              &where,
+                     const std::string              &filename,
+                     std::vector<std::string>       &path,
+                     const std::vector<std::string> &including);
+
       ParameterHandler     &prm;
       std::set<std::string> entries;
       std::set<std::string> subsections;
+      std::set<std::string> assigned;
     };
   } // namespace io
 } // namespace porofrac

@@ -24,6 +24,15 @@ namespace porofrac
       void
       add(const double time, const std::string &file);
 
+      /// The (time, file) entries written so far, and a replacement of them (to resume a run).
+      const std::vector<std::pair<double, std::string>> &
+      get_entries() const
+      {
+        return entries;
+      }
+      void
+      set_entries(const std::vector<std::pair<double, std::string>> &restored);
+
     private:
       std::string                                 filename;
       std::vector<std::pair<double, std::string>> entries;

@@ -16,6 +16,17 @@ namespace porofrac
   {
     using namespace dealii;
 
+    /// Command-line options of a run that are not deck parameters.
+    struct RunOptions
+    {
+      /// Write a checkpoint after every this many accepted steps (0: never) ...
+      unsigned int checkpoint_every_steps = 0;
+      /// ... or when this much wall time (s) has passed since the last one (0: never).
+      double checkpoint_every_seconds = 0;
+      /// Resume from the checkpoint in this directory (empty: start at t = 0).
+      std::string restart_directory;
+    };
+
     /**
      * What a scene needs from the application around it: where to write, where to talk, where to
      * time, and the summary.json being built.
@@ -36,6 +47,7 @@ namespace porofrac
       Json               &summary;
       /// "vtu", "vtk" or "none" (Output/Format).
       std::string output_format;
+      RunOptions  options;
 
       /// output_directory + "/" + @p file.
       std::string

@@ -121,14 +121,18 @@ namespace porofrac
         double contact = 0, lambda = 0, c_jump = 0, mechanical = 0, load = 0;
         /// |sigma|-weighted squared norm of the unscaled (25)-(26) (C_tau in Pa^2).
         double contact_unscaled = 0;
+        /// |sigma|-weighted squared norms of [u]_tau over the stick faces, and of [u] over all
+        /// faces; the face measure |Gamma| and max |u| over the displacement dofs.
+        double stick_slip = 0, jump = 0, measure = 0, u_max = 0;
       };
       ResidualParts
       residual_parts(const Vector<double> &u, const Vector<double> &lambda, const double c) const;
       /// Line-search merit: relative contact and mechanical residuals, multiplier scale given.
       static double
       merit(const ResidualParts &r, const double scale2);
-      /// max(|C| / |lambda|, |f - K u - B^T lambda| / |f|) at the target c; |c [u]| scales C
-      /// when lambda = 0.
+      /// max(|C| / |lambda|, |f - K u - B^T lambda| / |f|, |[u]_tau on stick faces| / slip scale)
+      /// at the target c (doc/algorithms.md §1.3): |c [u]| scales C when lambda is zero or
+      /// round-off against it.
       double
       relative_residual(const Vector<double> &u, const Vector<double> &lambda) const;
       /// Multiplier and jump of a face in its local frame (the tangential jump counted from

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_IO_OUTPUT_DIRECTORY_H
+#define POROFRAC_IO_OUTPUT_DIRECTORY_H
+
+#include <string>
+
+namespace porofrac
+{
+  namespace io
+  {
+    /**
+     * The output directory of one run, held for the run's lifetime. Taking it creates the
+     * directory if needed, checks that it can be written, takes the lock file `.porofrac.lock`
+     * (refusing a directory that a running porofrac process holds; a lock left by a process that
+     * no longer runs is taken over) and removes the files a previous run left there under the
+     * names porofrac writes (summary.json, history.csv, fractures.csv, fracture_p2.csv, mesh*,
+     * fractures.*, displacement.*, flow*, poromechanics*, checkpoint.bin), so that the directory
+     * never mixes the outputs of two runs. Other files are left alone. The destructor releases the
+     * lock.
+     */
+    class OutputDirectory
+    {
+    public:
+      /// @p parameter names the setting the directory comes from, for error messages. With
+      /// @p keep_outputs (a run that resumes in its own directory) nothing is removed.
+      OutputDirectory(const std::string &path,
+                      const std::string &parameter,
+                      const bool         keep_outputs = false);
+      ~OutputDirectory();
+
+      OutputDirectory(const OutputDirectory &) = delete;
+      OutputDirectory &
+      operator=(const OutputDirectory &) = delete;
+
+      /// Number of files of a previous run removed.
+      unsigned int
+      n_removed() const
+      {
+        return removed;
+      }
+
+    private:
+      std::string  lock_file;
+      unsigned int removed = 0;
+    };
+  } // namespace io
+} // namespace porofrac
+
+#endif

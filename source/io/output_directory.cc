@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/base/exceptions.h>
+#include <porofrac/io/output_directory.h>
+
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace porofrac
+{
+  namespace io
+  {
+    namespace
+    {
+      /// The names porofrac writes into an output directory.
+      bool
+      is_porofrac_output(const std::string &name)
+      {
+        static const std::regex pattern(
+          "summary\\.json|history\\.csv|fractures\\.csv|fracture_p2\\.csv|checkpoint\\.bin|"
+          "(mesh|mesh_fractures|fractures|displacement)\\.(vtu|vtk)|"
+          "(flow|poromechanics)(-[0-9]+(_fractures|_displacement)?\\.(vtu|vtk|pvtu)|\\.pvd)");
+        return std::regex_match(name, pattern);
+      }
+
+      /// Whether a process with this id runs (and may be signalled by us).
+      bool
+      process_runs(const long pid)
+      {
+        return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+      }
+
+      /// Creates @p file exclusively with our process id; false if it exists.
+      bool
+      create_lock(const std::string &file)
+      {
+        const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+        if (fd < 0)
+          return false;
+        const std::string pid = std::to_string(::getpid()) + "\n";
+        const bool        ok  = ::write(fd, pid.data(), pid.size()) == ssize_t(pid.size());
+        ::close(fd);
+        return ok;
+      }
+    } // namespace
+
+
+
+    OutputDirectory::OutputDirectory(const std::string &path,
+                                     const std::string &parameter,
+                                     const bool         keep_outputs)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      fs::create_directories(path, ec);
+      check_input(fs::is_directory(path, ec),
+                  parameter,
+                  "cannot create the output directory '" + path + "'");
+      const std::string file = path + "/.porofrac.lock";
+      if (!create_lock(file))
+        {
+          check_input(fs::exists(file, ec),
+                      parameter,
+                      "cannot write into the output directory '" + path + "'");
+          long          pid = 0;
+          std::ifstream in(file);
+          in >> pid;
+          check_input(!process_runs(pid) || pid == ::getpid(),
+                      parameter,
+                      "the output directory '" + path +
+                        "' is in use by another porofrac run "
+                        "(process " +
+                        std::to_string(pid) + "); choose another directory");
+          // A stale lock of a run that was killed.
+          fs::remove(file, ec);
+          check_input(create_lock(file),
+                      parameter,
+                      "cannot take the lock file of the output directory '" + path + "'");
+        }
+      lock_file = file;
+      if (keep_outputs)
+        return;
+      for (const auto &entry : fs::directory_iterator(path, ec))
+        if (entry.is_regular_file(ec) && is_porofrac_output(entry.path().filename().string()))
+          if (fs::remove(entry.path(), ec))
+            ++removed;
+    }
+
+
+
+    OutputDirectory::~OutputDirectory()
+    {
+      std::error_code ec;
+      std::filesystem::remove(lock_file, ec);
+    }
+  } // namespace io
+} // namespace porofrac

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// io::OutputDirectory: a directory held by a running process (its lock names process 1, which
+// always runs) is refused with an InputError; a stale lock (a process id that does not run) is
+// taken over; the files of a previous run are removed and other files are kept; the lock is
+// released when the holder ends; a path under a regular file cannot be created.
+#include <porofrac/base/exceptions.h>
+#include <porofrac/io/output_directory.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+  void
+  touch(const fs::path &p, const std::string &text = "x")
+  {
+    std::ofstream(p) << text;
+  }
+
+  /// A process id that does not run (searching down from a large one).
+  long
+  dead_pid()
+  {
+    for (long pid = 4000000; pid > 1000; --pid)
+      if (::kill(pid, 0) != 0 && errno == ESRCH)
+        return pid;
+    return -1;
+  }
+
+  void
+  attempt(const std::string &title, const fs::path &dir)
+  {
+    try
+      {
+        porofrac::io::OutputDirectory d(dir.string(), "Output/Directory");
+        std::cout << title << ": taken, " << d.n_removed() << " files removed" << std::endl;
+      }
+    catch (const porofrac::InputError &e)
+      {
+        std::string what = e.what();
+        const auto  p    = what.find(dir.string());
+        if (p != std::string::npos)
+          what.replace(p, dir.string().size(), "DIR");
+        std::cout << title << ": " << what << std::endl;
+      }
+  }
+} // namespace
+
+int
+main()
+{
+  const fs::path dir =
+    fs::temp_directory_path() / ("porofrac-outdir-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char *name : {"summary.json",
+                           "history.csv",
+                           "fractures.csv",
+                           "mesh.vtu",
+                           "mesh_fractures.vtu",
+                           "flow-00003.vtu",
+                           "flow-00003_fractures.vtu",
+                           "flow.pvd",
+                           "poromechanics-00012_displacement.vtk",
+                           "notes.txt",
+                           "my_mesh.vtu",
+                           "summary.json.bak"})
+    touch(dir / name);
+
+  touch(dir / ".porofrac.lock", "1\n");
+  attempt("held by process 1", dir);
+  std::cout << "  files kept: " << std::distance(fs::directory_iterator(dir), {}) << std::endl;
+
+  touch(dir / ".porofrac.lock", std::to_string(dead_pid()) + "\n");
+  attempt("stale lock", dir);
+  std::cout << "  lock released: " << (fs::exists(dir / ".porofrac.lock") ? "no" : "yes")
+            << std::endl;
+  for (const char *name : {"notes.txt", "my_mesh.vtu", "summary.json.bak", "summary.json"})
+    std::cout << "  " << name << (fs::exists(dir / name) ? " kept" : " removed") << std::endl;
+
+  attempt("empty directory", dir);
+  touch(dir / "plain_file");
+  attempt("below a regular file", dir / "plain_file" / "out");
+  fs::remove_all(dir);
+}
