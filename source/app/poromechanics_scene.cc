@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace porofrac
@@ -183,17 +184,17 @@ namespace porofrac
 
 
 
-    template <int dim>
-    void
-    run_poromechanics_scene(const PhysicsParameters      &parameters,
-                            const geometry::CutMesh<dim> &mesh,
-                            io::RunContext               &context)
+    namespace
     {
-      const coupling::CouplingParameters &cp = parameters.coupling;
-      // Inside coupled iterations the flow Newton must be converged tightly (see
-      // CouplingParameters); the deck's tolerances are the upper bounds.
-      flow::FlowModel<dim> flow =
-        flow::make_flow_model<dim>(parameters.flow, mesh, [&](flow::NewtonParameters &n) {
+      /// The flow model of a coupled scene: the deck's flow with tight inner Newton tolerances.
+      template <int dim>
+      flow::FlowModel<dim>
+      make_inner_flow_model(const PhysicsParameters &parameters, const geometry::CutMesh<dim> &mesh)
+      {
+        const coupling::CouplingParameters &cp = parameters.coupling;
+        // Inside coupled iterations the flow Newton must be converged tightly (see
+        // CouplingParameters); the deck's tolerances are the upper bounds.
+        return flow::make_flow_model<dim>(parameters.flow, mesh, [&](flow::NewtonParameters &n) {
           // At its noise floor (kinks of S and of the upwinding), accept an inner solve that meets
           // the flow deck's own tolerances instead of cutting the step.
           n.stagnation_update_tolerance = n.update_tolerance;
@@ -201,90 +202,143 @@ namespace porofrac
           n.residual_tolerance = std::min(n.residual_tolerance, cp.inner_flow_residual_tolerance);
           n.update_tolerance   = std::min(n.update_tolerance, cp.inner_flow_update_tolerance);
         });
+      }
 
-      context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
-      mechanics::ContactProblem<dim> mech(mesh,
-                                          parameters.mechanics,
-                                          context.verbose,
-                                          context.timer);
-      mech.setup();
-      context.summary["n_dofs_mechanics"] = mech.n_dofs();
-      context.summary["n_unknowns_flow"]  = flow.solver->n_unknowns();
-      context.report << "Coupling: " << mech.n_dofs() << " mechanics dofs, "
-                     << flow.solver->n_unknowns() << " flow unknowns, " << flow.grid->n_matrix_cells
-                     << " matrix cells, " << flow.grid->n_fracture_cells << " fracture cells"
-                     << std::endl;
 
-      coupling::Poromechanics<dim> pm(mech, flow, cp, context.verbose, context.timer);
-      context.progress << "*** Poromechanics: initial state" << std::endl;
-      pm.initialize();
-      const unsigned int initial_mechanics_iterations = mech.statistics().iterations;
-      report_states(context.report, mech, "t = 0");
-      context.report << "Coupling: t = 0, mean fracture width " << std::scientific
-                     << std::setprecision(4) << pm.mean_fracture_width() << " m"
-                     << std::defaultfloat << std::endl;
 
-      int           last_written = -1; // step of the last field files
-      io::PvdWriter pvd(context.path("poromechanics.pvd"));
-      const auto    output = [&](const unsigned int step, const double time) {
-        if (context.output_format == "none")
-          return;
-        TimerOutput::Scope timer(context.timer, "Coupling: output");
-        const std::string  name = "poromechanics-" + Utilities::int_to_string(step, 5);
-        write_fields(pm, context.path(name), context.output_format);
-        pvd.add(time, name + "." + context.output_format);
-        last_written = step;
+      /**
+       * One coupled run: the coupled problem, its time stepper, energy record, field series,
+       * text files and checkpoints, and what run_time_loop() calls for each step.
+       */
+      template <int dim>
+      class CoupledRun
+      {
+      public:
+        CoupledRun(const PhysicsParameters      &parameters,
+                   const geometry::CutMesh<dim> &mesh,
+                   io::RunContext               &context);
+
+        /// The state at t = 0 (or the restored one) written, the text files open.
+        void
+        start();
+        StepOutcome
+        attempt(const double dt);
+        void
+        accept();
+        void
+        write_accepted_state(const bool restore_first);
+        /// Report and summary.json entries of the finished run; its postprocessors.
+        void
+        finish(const PhysicsParameters &parameters, const geometry::CutMesh<dim> &mesh);
+
+        AdaptiveTimeStepper stepper;
+
+      private:
+        void
+        output(const unsigned int step, const double time);
+        void
+        save(io::CheckpointWriter &w) const;
+        void
+        load(io::CheckpointReader &r);
+
+        io::RunContext                                &context;
+        const coupling::CouplingParameters             parameters;
+        flow::FlowModel<dim>                           flow;
+        mechanics::ContactProblem<dim>                 mech;
+        coupling::Poromechanics<dim>                   pm;
+        unsigned int                                   initial_mechanics_iterations = 0;
+        std::unique_ptr<coupling::EnergyEstimate<dim>> energy;
+        coupling::CoupledStepReport                    step_report;
+        RunTotals                                      totals;
+        io::PvdWriter                                  pvd;
+        int                                            last_written = -1; // field files' step
+        Checkpointing                                  checkpoints;
+        std::ofstream                                 *fractures = nullptr, *history = nullptr;
       };
 
-      const flow::TimeStepping     &ts = flow.stepping;
-      AdaptiveTimeStepper           stepper(ts.final_time,
-                                  ts.initial_step,
-                                  ts.maximum_step,
-                                  ts.growth,
-                                  ts.maximum_cuts,
-                                  cp.output_times);
-      coupling::EnergyEstimate<dim> energy(pm);
-      coupling::CoupledStepReport   r;
-      RunTotals                     totals;
-      Checkpointing                 checkpoints(
-        context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"});
-      const auto save = [&](io::CheckpointWriter &w) {
-        pm.save(w);
-        energy.save(w);
-        totals.save(w);
-        w.put("last written step", static_cast<unsigned int>(last_written + 1));
-      };
-      if (checkpoints.restarting())
-        checkpoints.restore([&](io::CheckpointReader &c) {
-          pm.load(c);
-          energy.load(c);
-          totals.load(c);
-          unsigned int written = 0;
-          c.get("last written step", written);
-          last_written = int(written) - 1;
-        });
-      else
-        output(0, 0.);
-      std::ostringstream fractures_header;
-      mechanics::write_fracture_table_header(fractures_header, dim, true);
-      std::ofstream &fractures = checkpoints.text_file("fractures.csv", fractures_header.str());
-      double         t         = stepper.time();
-      if (!checkpoints.restarting())
-        mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
-      std::ofstream &history = checkpoints.text_file("history.csv", history_header);
-      history << std::setprecision(10);
 
-      const auto attempt = [&](const double dt) {
-        r = pm.solve_time_step(dt);
-        totals.flow += r.flow_newton_iterations;
-        totals.mechanics += r.mechanics_iterations;
-        totals.maps += r.map_evaluations;
-        totals.gmres += r.gmres_iterations;
-        return StepOutcome{r.converged, r.failure};
-      };
-      const auto accept = [&]() {
+
+      template <int dim>
+      CoupledRun<dim>::CoupledRun(const PhysicsParameters      &physics,
+                                  const geometry::CutMesh<dim> &mesh,
+                                  io::RunContext               &context)
+          : stepper(physics.flow.stepping.final_time,
+                    physics.flow.stepping.initial_step,
+                    physics.flow.stepping.maximum_step,
+                    physics.flow.stepping.growth,
+                    physics.flow.stepping.maximum_cuts,
+                    physics.coupling.output_times)
+          , context(context)
+          , parameters(physics.coupling)
+          , flow(make_inner_flow_model(physics, mesh))
+          , mech(mesh, physics.mechanics, context.verbose, context.timer)
+          , pm(mech, flow, parameters, context.verbose, context.timer)
+          , pvd(context.path("poromechanics.pvd"))
+          , checkpoints(context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"})
+      {
+        context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
+        mech.setup();
+        context.summary["n_dofs_mechanics"] = mech.n_dofs();
+        context.summary["n_unknowns_flow"]  = flow.solver->n_unknowns();
+        context.report << "Coupling: " << mech.n_dofs() << " mechanics dofs, "
+                       << flow.solver->n_unknowns() << " flow unknowns, "
+                       << flow.grid->n_matrix_cells << " matrix cells, "
+                       << flow.grid->n_fracture_cells << " fracture cells" << std::endl;
+        context.progress << "*** Poromechanics: initial state" << std::endl;
+        pm.initialize();
+        initial_mechanics_iterations = mech.statistics().iterations;
+        energy                       = std::make_unique<coupling::EnergyEstimate<dim>>(pm);
+        report_states(context.report, mech, "t = 0");
+        context.report << "Coupling: t = 0, mean fracture width " << std::scientific
+                       << std::setprecision(4) << pm.mean_fracture_width() << " m"
+                       << std::defaultfloat << std::endl;
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::start()
+      {
+        if (checkpoints.restarting())
+          checkpoints.restore([this](io::CheckpointReader &r) { load(r); });
+        else
+          output(0, 0.);
+        std::ostringstream header;
+        mechanics::write_fracture_table_header(header, dim, true);
+        fractures = &checkpoints.text_file("fractures.csv", header.str());
+        if (!checkpoints.restarting())
+          {
+            const double t = 0;
+            mechanics::write_fracture_table_rows(*fractures, mech, &flow.grid->aperture, &t);
+          }
+        history = &checkpoints.text_file("history.csv", history_header);
+        *history << std::setprecision(10);
+      }
+
+
+
+      template <int dim>
+      StepOutcome
+      CoupledRun<dim>::attempt(const double dt)
+      {
+        step_report = pm.solve_time_step(dt);
+        totals.flow += step_report.flow_newton_iterations;
+        totals.mechanics += step_report.mechanics_iterations;
+        totals.maps += step_report.map_evaluations;
+        totals.gmres += step_report.gmres_iterations;
+        return {step_report.converged, step_report.failure};
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::accept()
+      {
+        const auto        &r    = step_report;
         const unsigned int step = stepper.step_number();
-        t                       = stepper.time();
+        const double       t    = stepper.time();
         totals.cuts += stepper.last_step_cuts();
         totals.coupling += r.coupling_iterations;
         totals.coupling_max_per_step =
@@ -292,9 +346,9 @@ namespace porofrac
         totals.mass_error_max =
           std::max({totals.mass_error_max, r.mass_defect[0], r.mass_defect[1]});
         // (19) compares the new state with the accepted one: record before accepting.
-        const coupling::StepEnergy e = energy.record_step();
+        const coupling::StepEnergy e = energy->record_step();
         pm.accept_time_step();
-        write_history_row(history, stepper, pm, r, e);
+        write_history_row(*history, stepper, pm, r, e);
         const auto c = mechanics::count_states(mech);
         context.progress << "  Step " << step << ": t = " << t / 3.15576e7
                          << " y, dt = " << stepper.last_step_size() << " s, "
@@ -305,47 +359,122 @@ namespace porofrac
                          << std::endl;
         const bool table = stepper.at_output_time() || stepper.finished();
         if (table)
-          mechanics::write_fracture_table_rows(fractures, mech, &flow.grid->aperture, &t);
-        if ((ts.output_every > 0 && step % ts.output_every == 0) || table)
+          mechanics::write_fracture_table_rows(*fractures, mech, &flow.grid->aperture, &t);
+        const unsigned int every = flow.stepping.output_every;
+        if ((every > 0 && step % every == 0) || table)
           output(step, t);
-        checkpoints.after_step(save);
-      };
-      const auto write_accepted_state = [&](const bool restore_first) {
+        checkpoints.after_step([this](io::CheckpointWriter &w) { save(w); });
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::write_accepted_state(const bool restore_first)
+      {
         if (restore_first)
           pm.restore_accepted_state();
         if (last_written != int(stepper.step_number()))
           output(stepper.step_number(), stepper.time());
         if (!restore_first)
-          checkpoints.write(save);
-      };
-      run_time_loop(stepper, "Coupling", attempt, accept, write_accepted_state, context.progress);
+          checkpoints.write([this](io::CheckpointWriter &w) { save(w); });
+      }
 
-      report_run(pm, stepper, totals, energy.max_violation(), context.report);
-      context.summary["mechanics"] = summarize_mechanics(pm, totals, initial_mechanics_iterations);
-      io::Json cpl                 = io::Json::object();
-      cpl["fixed_point"] = std::string(cp.variable == coupling::CouplingVariable::displacement ?
-                                         "displacement" :
-                                         "equivalent pressure");
-      cpl["method"]      = cp.fixed_point.method;
-      cpl["iterations"]  = totals.coupling;
-      cpl["iterations_max_per_step"]                     = totals.coupling_max_per_step;
-      cpl["map_evaluations"]                             = totals.maps;
-      cpl["gmres_iterations"]                            = totals.gmres;
-      context.summary["coupling"]                        = cpl;
-      context.summary["n_time_steps"]                    = stepper.step_number();
-      context.summary["final_time"]                      = stepper.time();
-      context.summary["time_step_cuts"]                  = totals.cuts;
-      context.summary["flow_newton_iterations"]          = totals.flow;
-      context.summary["mass_balance_error_max"]          = totals.mass_error_max;
-      context.summary["energy_inequality_violation_max"] = energy.max_violation();
-      context.summary["mean_fracture_width"]             = pm.mean_fracture_width();
 
-      SceneView<dim> scene{mesh, parameters};
-      scene.mechanics     = &mech;
-      scene.flow          = &flow;
-      scene.poromechanics = &pm;
-      scene.time          = stepper.time();
-      run_postprocessors(scene, context);
+
+      template <int dim>
+      void
+      CoupledRun<dim>::output(const unsigned int step, const double time)
+      {
+        if (context.output_format == "none")
+          return;
+        TimerOutput::Scope timer(context.timer, "Coupling: output");
+        const std::string  name = "poromechanics-" + Utilities::int_to_string(step, 5);
+        write_fields(pm, context.path(name), context.output_format);
+        pvd.add(time, name + "." + context.output_format);
+        last_written = step;
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::save(io::CheckpointWriter &w) const
+      {
+        pm.save(w);
+        energy->save(w);
+        totals.save(w);
+        w.put("last written step", static_cast<unsigned int>(last_written + 1));
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::load(io::CheckpointReader &r)
+      {
+        pm.load(r);
+        energy->load(r);
+        totals.load(r);
+        unsigned int written = 0;
+        r.get("last written step", written);
+        last_written = int(written) - 1;
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::finish(const PhysicsParameters &physics, const geometry::CutMesh<dim> &mesh)
+      {
+        report_run(pm, stepper, totals, energy->max_violation(), context.report);
+        auto &summary        = context.summary;
+        summary["mechanics"] = summarize_mechanics(pm, totals, initial_mechanics_iterations);
+        io::Json cpl         = io::Json::object();
+        cpl["fixed_point"]   = std::string(
+          parameters.variable == coupling::CouplingVariable::displacement ? "displacement" :
+                                                                            "equivalent pressure");
+        cpl["method"]                              = parameters.fixed_point.method;
+        cpl["iterations"]                          = totals.coupling;
+        cpl["iterations_max_per_step"]             = totals.coupling_max_per_step;
+        cpl["map_evaluations"]                     = totals.maps;
+        cpl["gmres_iterations"]                    = totals.gmres;
+        summary["coupling"]                        = cpl;
+        summary["n_time_steps"]                    = stepper.step_number();
+        summary["final_time"]                      = stepper.time();
+        summary["time_step_cuts"]                  = totals.cuts;
+        summary["flow_newton_iterations"]          = totals.flow;
+        summary["mass_balance_error_max"]          = totals.mass_error_max;
+        summary["energy_inequality_violation_max"] = energy->max_violation();
+        summary["mean_fracture_width"]             = pm.mean_fracture_width();
+
+        SceneView<dim> scene{mesh, physics};
+        scene.mechanics     = &mech;
+        scene.flow          = &flow;
+        scene.poromechanics = &pm;
+        scene.time          = stepper.time();
+        run_postprocessors(scene, context);
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    run_poromechanics_scene(const PhysicsParameters      &parameters,
+                            const geometry::CutMesh<dim> &mesh,
+                            io::RunContext               &context)
+    {
+      CoupledRun<dim> run(parameters, mesh, context);
+      run.start();
+      run_time_loop(
+        run.stepper,
+        "Coupling",
+        [&](const double dt) { return run.attempt(dt); },
+        [&]() { run.accept(); },
+        [&](const bool restore_first) { run.write_accepted_state(restore_first); },
+        context.progress);
+      run.finish(parameters, mesh);
     }
 
     template void

@@ -78,84 +78,122 @@ namespace porofrac
 
 
 
-    template <int dim>
-    void
-    run_two_phase_flow_scene(const PhysicsParameters      &parameters,
-                             const geometry::CutMesh<dim> &mesh,
-                             io::RunContext               &context)
+    namespace
     {
-      flow::FlowModel<dim>       model  = flow::make_flow_model<dim>(parameters.flow, mesh);
-      flow::TpfaGrid<dim>       &grid   = *model.grid;
-      flow::TwoPhaseSolver<dim> &solver = *model.solver;
-      const flow::TimeStepping  &ts     = model.stepping;
-      solver.timer                      = &context.timer;
+      /**
+       * One flow-only run: the flow model, its time stepper, field series, history.csv and
+       * checkpoints, and what run_time_loop() calls for each step.
+       */
+      template <int dim>
+      class FlowRun
+      {
+      public:
+        FlowRun(const PhysicsParameters      &parameters,
+                const geometry::CutMesh<dim> &mesh,
+                io::RunContext               &context);
 
-      context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
-                     << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
-                     << " interface nodes, " << grid.n_intersections << " intersection nodes, "
-                     << solver.n_unknowns() << " unknowns" << std::endl
-                     << "Flow: " << grid.n_non_admissible
-                     << " cell faces with the circumcentre on the wrong side, " << grid.n_fallback
-                     << " non-Delaunay connections (unsigned distances)" << std::endl;
-      context.summary["n_unknowns_flow"] = solver.n_unknowns();
+        /// The state at t = 0 (or the restored one) written, history.csv open.
+        void
+        start();
+        StepOutcome
+        attempt(const double dt);
+        void
+        accept();
+        void
+        write_accepted_state(const bool restore_first);
+        /// Report and summary.json entries of the finished run; its postprocessors.
+        void
+        finish(const PhysicsParameters &parameters);
 
-      int           last_written = -1; // step of the last field files
-      io::PvdWriter pvd(context.path("flow.pvd"));
-      const auto    output = [&](const unsigned int step, const double t) {
-        if (context.output_format == "none")
-          return;
-        TimerOutput::Scope timer(context.timer, "Flow: output");
-        const std::string  name = "flow-" + Utilities::int_to_string(step, 5);
-        geometry::write_cell_fields(mesh,
-                                    context.path(name),
-                                    context.output_format,
-                                    flow::matrix_fields(solver, grid));
-        if (grid.n_fracture_cells > 0)
-          geometry::write_fracture_cells(mesh,
-                                         context.path(name + "_fractures." + context.output_format),
-                                         context.output_format,
-                                         flow::fracture_fields(solver, grid));
-        pvd.add(t, name + "." + context.output_format);
-        last_written = step;
+        AdaptiveTimeStepper stepper;
+
+      private:
+        void
+        output(const unsigned int step, const double time);
+        void
+        save(io::CheckpointWriter &w) const;
+        void
+        load(io::CheckpointReader &r);
+
+        const geometry::CutMesh<dim> &mesh;
+        io::RunContext               &context;
+        flow::FlowModel<dim>          model;
+        flow::TpfaGrid<dim>          &grid;
+        flow::TwoPhaseSolver<dim>    &solver;
+        FlowTotals                    totals;
+        flow::StepResult              result;
+        io::PvdWriter                 pvd;
+        int                           last_written = -1; // step of the last field files
+        Checkpointing                 checkpoints;
+        std::ofstream                *history = nullptr;
       };
 
-      AdaptiveTimeStepper stepper(
-        ts.final_time, ts.initial_step, ts.maximum_step, ts.growth, ts.maximum_cuts);
-      FlowTotals    totals;
-      Checkpointing checkpoints(context, "two-phase flow", stepper, pvd, {"history.csv"});
-      totals.initial_volumes = solver.phase_volumes(solver.state);
-      if (checkpoints.restarting())
-        checkpoints.restore([&](io::CheckpointReader &r) {
-          r.expect("flow unknowns", solver.n_unknowns());
-          r.get("flow state", solver.state);
-          totals.load(r);
-          unsigned int written = 0;
-          r.get("last written step", written);
-          last_written = int(written) - 1;
-          solver.begin_time_step();
-        });
-      else
-        output(0, 0.);
-      std::ofstream &history = checkpoints.text_file(
-        "history.csv",
-        "time,dt,mean_fracture_width,flow_newton_iterations,mechanics_iterations,"
-        "coupling_iterations,time_step_cuts,mass_balance_error\n");
-      history << std::setprecision(10);
 
-      const auto save = [&](io::CheckpointWriter &w) {
-        w.put("flow unknowns", solver.n_unknowns());
-        w.put("flow state", solver.state);
-        totals.save(w);
-        w.put("last written step", static_cast<unsigned int>(last_written + 1));
-      };
-      flow::StepResult result;
-      const auto       attempt = [&](const double dt) {
+
+      template <int dim>
+      FlowRun<dim>::FlowRun(const PhysicsParameters      &parameters,
+                            const geometry::CutMesh<dim> &mesh,
+                            io::RunContext               &context)
+          : stepper(parameters.flow.stepping.final_time,
+                    parameters.flow.stepping.initial_step,
+                    parameters.flow.stepping.maximum_step,
+                    parameters.flow.stepping.growth,
+                    parameters.flow.stepping.maximum_cuts)
+          , mesh(mesh)
+          , context(context)
+          , model(flow::make_flow_model<dim>(parameters.flow, mesh))
+          , grid(*model.grid)
+          , solver(*model.solver)
+          , pvd(context.path("flow.pvd"))
+          , checkpoints(context, "two-phase flow", stepper, pvd, {"history.csv"})
+      {
+        solver.timer = &context.timer;
+        context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
+                       << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
+                       << " interface nodes, " << grid.n_intersections << " intersection nodes, "
+                       << solver.n_unknowns() << " unknowns" << std::endl
+                       << "Flow: " << grid.n_non_admissible
+                       << " cell faces with the circumcentre on the wrong side, " << grid.n_fallback
+                       << " non-Delaunay connections (unsigned distances)" << std::endl;
+        context.summary["n_unknowns_flow"] = solver.n_unknowns();
+        totals.initial_volumes             = solver.phase_volumes(solver.state);
+      }
+
+
+
+      template <int dim>
+      void
+      FlowRun<dim>::start()
+      {
+        if (checkpoints.restarting())
+          checkpoints.restore([this](io::CheckpointReader &r) { load(r); });
+        else
+          output(0, 0.);
+        history = &checkpoints.text_file(
+          "history.csv",
+          "time,dt,mean_fracture_width,flow_newton_iterations,mechanics_iterations,"
+          "coupling_iterations,time_step_cuts,mass_balance_error\n");
+        *history << std::setprecision(10);
+      }
+
+
+
+      template <int dim>
+      StepOutcome
+      FlowRun<dim>::attempt(const double dt)
+      {
         solver.state = solver.old_state;
         result       = solver.solve_time_step(dt, context.verbose);
         totals.newton += result.iterations;
-        return StepOutcome{result.converged, result.failure};
-      };
-      const auto accept = [&]() {
+        return {result.converged, result.failure};
+      }
+
+
+
+      template <int dim>
+      void
+      FlowRun<dim>::accept()
+      {
         const unsigned int step       = stepper.step_number();
         const double       t          = stepper.time();
         const double       mass_error = std::max(result.mass_defect[0], result.mass_defect[1]);
@@ -163,49 +201,134 @@ namespace porofrac
         totals.max_step_newton        = std::max(totals.max_step_newton, result.iterations);
         totals.cuts += stepper.last_step_cuts();
         solver.begin_time_step();
-        history << t << ',' << stepper.last_step_size() << ',' << flow::mean_aperture(mesh, grid)
-                << ',' << result.iterations << ",0,0," << stepper.last_step_cuts() << ','
-                << mass_error << std::endl;
+        *history << t << ',' << stepper.last_step_size() << ',' << flow::mean_aperture(mesh, grid)
+                 << ',' << result.iterations << ",0,0," << stepper.last_step_cuts() << ','
+                 << mass_error << std::endl;
         context.progress << "  Flow step " << step << ": t = " << t
                          << " s, dt = " << stepper.last_step_size() << " s, " << result.iterations
                          << " Newton iterations, mass defect " << mass_error << std::endl;
-        if ((ts.output_every > 0 && step % ts.output_every == 0) || stepper.finished())
+        const unsigned int every = model.stepping.output_every;
+        if ((every > 0 && step % every == 0) || stepper.finished())
           output(step, t);
-        checkpoints.after_step(save);
-      };
-      const auto write_accepted_state = [&](const bool restore_first) {
+        checkpoints.after_step([this](io::CheckpointWriter &w) { save(w); });
+      }
+
+
+
+      template <int dim>
+      void
+      FlowRun<dim>::write_accepted_state(const bool restore_first)
+      {
         if (restore_first)
           solver.state = solver.old_state;
         if (last_written != int(stepper.step_number()))
           output(stepper.step_number(), stepper.time());
         if (!restore_first)
-          checkpoints.write(save);
-      };
-      run_time_loop(stepper, "Flow", attempt, accept, write_accepted_state, context.progress);
+          checkpoints.write([this](io::CheckpointWriter &w) { save(w); });
+      }
 
-      const auto  volumes         = solver.phase_volumes(solver.state);
-      const auto &initial_volumes = totals.initial_volumes;
-      context.report << "Flow: " << stepper.step_number() << " time steps, " << totals.cuts
-                     << " time-step cuts" << std::endl
-                     << std::scientific << std::setprecision(4) << "Flow: final time "
-                     << stepper.time() << " s" << std::endl
-                     << "Flow: pore volume of w " << initial_volumes[0] << " -> " << volumes[0]
-                     << ", of nw " << initial_volumes[1] << " -> " << volumes[1]
-                     << std::defaultfloat << std::endl;
-      report_saturation_ranges(model, context.report);
-      context.report << "Flow: mass balance error per step below 1e-10: "
-                     << (totals.mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl;
-      context.summary["n_time_steps"]                        = stepper.step_number();
-      context.summary["final_time"]                          = stepper.time();
-      context.summary["mass_balance_error_max"]              = totals.mass_error_max;
-      context.summary["flow_newton_iterations"]              = totals.newton;
-      context.summary["flow_newton_iterations_max_per_step"] = totals.max_step_newton;
-      context.summary["time_step_cuts"]                      = totals.cuts;
 
-      SceneView<dim> scene{mesh, parameters};
-      scene.flow = &model;
-      scene.time = stepper.time();
-      run_postprocessors(scene, context);
+
+      template <int dim>
+      void
+      FlowRun<dim>::output(const unsigned int step, const double t)
+      {
+        if (context.output_format == "none")
+          return;
+        TimerOutput::Scope timer(context.timer, "Flow: output");
+        const std::string  name   = "flow-" + Utilities::int_to_string(step, 5);
+        const std::string &format = context.output_format;
+        geometry::write_cell_fields(mesh,
+                                    context.path(name),
+                                    format,
+                                    flow::matrix_fields(solver, grid));
+        if (grid.n_fracture_cells > 0)
+          geometry::write_fracture_cells(mesh,
+                                         context.path(name + "_fractures." + format),
+                                         format,
+                                         flow::fracture_fields(solver, grid));
+        pvd.add(t, name + "." + format);
+        last_written = step;
+      }
+
+
+
+      template <int dim>
+      void
+      FlowRun<dim>::save(io::CheckpointWriter &w) const
+      {
+        w.put("flow unknowns", solver.n_unknowns());
+        w.put("flow state", solver.state);
+        totals.save(w);
+        w.put("last written step", static_cast<unsigned int>(last_written + 1));
+      }
+
+
+
+      template <int dim>
+      void
+      FlowRun<dim>::load(io::CheckpointReader &r)
+      {
+        r.expect("flow unknowns", solver.n_unknowns());
+        r.get("flow state", solver.state);
+        totals.load(r);
+        unsigned int written = 0;
+        r.get("last written step", written);
+        last_written = int(written) - 1;
+        solver.begin_time_step();
+      }
+
+
+
+      template <int dim>
+      void
+      FlowRun<dim>::finish(const PhysicsParameters &parameters)
+      {
+        const auto  volumes         = solver.phase_volumes(solver.state);
+        const auto &initial_volumes = totals.initial_volumes;
+        context.report << "Flow: " << stepper.step_number() << " time steps, " << totals.cuts
+                       << " time-step cuts" << std::endl
+                       << std::scientific << std::setprecision(4) << "Flow: final time "
+                       << stepper.time() << " s" << std::endl
+                       << "Flow: pore volume of w " << initial_volumes[0] << " -> " << volumes[0]
+                       << ", of nw " << initial_volumes[1] << " -> " << volumes[1]
+                       << std::defaultfloat << std::endl;
+        report_saturation_ranges(model, context.report);
+        context.report << "Flow: mass balance error per step below 1e-10: "
+                       << (totals.mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl;
+        auto &summary                                  = context.summary;
+        summary["n_time_steps"]                        = stepper.step_number();
+        summary["final_time"]                          = stepper.time();
+        summary["mass_balance_error_max"]              = totals.mass_error_max;
+        summary["flow_newton_iterations"]              = totals.newton;
+        summary["flow_newton_iterations_max_per_step"] = totals.max_step_newton;
+        summary["time_step_cuts"]                      = totals.cuts;
+
+        SceneView<dim> scene{mesh, parameters};
+        scene.flow = &model;
+        scene.time = stepper.time();
+        run_postprocessors(scene, context);
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    run_two_phase_flow_scene(const PhysicsParameters      &parameters,
+                             const geometry::CutMesh<dim> &mesh,
+                             io::RunContext               &context)
+    {
+      FlowRun<dim> run(parameters, mesh, context);
+      run.start();
+      run_time_loop(
+        run.stepper,
+        "Flow",
+        [&](const double dt) { return run.attempt(dt); },
+        [&]() { run.accept(); },
+        [&](const bool restore_first) { run.write_accepted_state(restore_first); },
+        context.progress);
+      run.finish(parameters);
     }
 
     template void
