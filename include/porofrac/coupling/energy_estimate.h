@@ -46,7 +46,8 @@ namespace porofrac
       double      friction_work = 0;
       double      supplied_work = 0;
       /// max(0, change + dissipation + friction work - supplied) relative to the sum of the
-      /// magnitudes of the terms: 0 when the inequality holds.
+      /// magnitudes of the terms plus the coupling tolerance times |E_{k+1}| (the resolution of
+      /// the terms): 0 when the inequality holds.
       double violation = 0;
     };
 
