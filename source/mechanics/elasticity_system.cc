@@ -13,6 +13,7 @@
 #include <porofrac/io/text.h>
 #include <porofrac/mechanics/elasticity_system.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -298,11 +299,27 @@ namespace porofrac
             check_id(id, "Mechanics/Normal pressure");
             pressure[id] = io::parse_expressions<dim>({e}, "Mechanics/Normal pressure");
           }
+        const std::string fp = "Mechanics/Fracture pressure";
+        for (const auto &[id, e] : prm.fracture_pressure)
+          check_input(id == numbers::invalid_unsigned_int ||
+                        std::count(mesh.fracture_ids.begin(), mesh.fracture_ids.end(), id) > 0,
+                      fp,
+                      "fracture id " + std::to_string(id) + " is not a fracture of the mesh");
+        for (const unsigned int id : mesh.fracture_ids)
+          {
+            auto it = prm.fracture_pressure.find(id);
+            if (it == prm.fracture_pressure.end())
+              it = prm.fracture_pressure.find(numbers::invalid_unsigned_int);
+            if (it != prm.fracture_pressure.end())
+              fracture_pressure[id] = io::parse_expressions<dim>({it->second}, fp);
+          }
       }
 
       std::unique_ptr<FunctionParser<dim>>                               body;
       SymmetricTensor<2, dim>                                            sigma0;
       std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>> traction, pressure;
+      /// Fluid pressure in the fractures by fracture id (none: no pressure).
+      std::map<unsigned int, std::unique_ptr<FunctionParser<dim>>> fracture_pressure;
     };
 
 
@@ -472,11 +489,31 @@ namespace porofrac
             }
           constraints_hom.distribute_local_to_global(scratch.matrix, scratch.local, base_matrix);
         }
+      add_fracture_pressure(loads);
       check_input(std::isfinite(f.l2_norm()),
                   "Mechanics",
                   "the loads (body force, tractions, pressures, pre-stress) are not finite");
       f_fixed = f;
       add_coupling_to_matrix();
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::add_fracture_pressure(const DeckLoads<dim> &loads)
+    {
+      // A fluid pressure p in the fracture pushes both sides apart, -p n on each: the work
+      // -int p [v]_n, a load like p_E,f in (11b), constant per face (its value at the centre).
+      for (const auto &face : mesh.fracture_faces)
+        {
+          const auto it = loads.fracture_pressure.find(face.fracture_id);
+          if (it == loads.fracture_pressure.end())
+            continue;
+          const double p = it->second->value(face.centre);
+          for (const auto &e : coupling[face.index])
+            f(e.dof) -= p * face.normal[e.component] * e.value;
+        }
     }
 
 

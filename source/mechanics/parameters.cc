@@ -194,6 +194,12 @@ namespace porofrac
                         "",
                         Patterns::Anything(),
                         "Pressure p per boundary id (traction -p n), 'id: expr; id: expr'.");
+      prm.declare_entry("Fracture pressure",
+                        "",
+                        Patterns::Anything(),
+                        "Fluid pressure p in the fractures (Pa), acting on both sides as -p n "
+                        "(the face value at its centre): 'id: expr; id: expr' per fracture id, or "
+                        "one expression for every fracture; expressions of x, y (, z).");
       prm.declare_entry(
         "Point constraints",
         "",
@@ -288,6 +294,8 @@ namespace porofrac
                       "expected 'id: expression'");
           pressure[id] = e;
         }
+      fracture_pressure =
+        parse_scalar_map(prm.get(p, "Fracture pressure"), "Mechanics/Fracture pressure");
       point_constraints = parse_point_constraints(prm.get(p, "Point constraints"),
                                                   dim,
                                                   "Mechanics/Point constraints");

@@ -206,6 +206,9 @@ namespace porofrac
                              CellScratch                &scratch);
       void
       add_coupling_to_matrix();
+      /// Adds the load of Mechanics/Fracture pressure to f.
+      void
+      add_fracture_pressure(const DeckLoads<dim> &loads);
 
       const geometry::CutMesh<dim> &mesh;
       const ContactParameters      &prm;

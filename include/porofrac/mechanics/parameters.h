@@ -73,7 +73,10 @@ namespace porofrac
       std::map<dealii::types::boundary_id, std::map<unsigned int, std::string>> dirichlet;
       std::map<dealii::types::boundary_id, std::map<unsigned int, std::string>> traction;
       std::map<dealii::types::boundary_id, std::string>                         pressure;
-      std::vector<PointConstraint>                                              point_constraints;
+      /// Fluid pressure in the fractures: fracture id (numbers::invalid_unsigned_int: every
+      /// fracture) -> expression of x, y (, z).
+      std::map<unsigned int, std::string> fracture_pressure;
+      std::vector<PointConstraint>        point_constraints;
 
       /// Coefficient field F0: fracture id -> expression of x, y (, z) and d; `friction_all`
       /// for fractures not listed.
