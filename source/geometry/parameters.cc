@@ -99,6 +99,14 @@ namespace porofrac
                         "gmsh 2D meshing algorithm (in 3D for the boundary and fracture "
                         "surfaces; the volume is always meshed by gmsh's Delaunay algorithm); "
                         "Delaunay meshes suit TPFA best.");
+      prm.declare_entry("Mesh optimization",
+                        "true",
+                        Patterns::Bool(),
+                        "3D: let gmsh optimize the tetrahedra after its Delaunay meshing (edge "
+                        "swaps and node moves by quality). It removes the slivers (dihedral "
+                        "angles near 0 and 180 degrees) that Delaunay meshes have, at the price of "
+                        "some connections that are no longer Delaunay (TPFA with circumcentres "
+                        "then has non-positive distances); doc/geometry.md has the numbers.");
       RandomDiscParameters::declare_parameters(prm);
       prm.leave_subsection();
     }
@@ -125,6 +133,7 @@ namespace porofrac
       global_refinements  = prm.get_integer("Global refinements");
       delaunay_flips      = prm.get_bool("Delaunay flips");
       algorithm           = prm.get("Mesh algorithm");
+      mesh_optimization   = prm.get_bool("Mesh optimization");
       random_discs.parse_parameters(prm);
       prm.leave_subsection();
     }

@@ -175,7 +175,7 @@ namespace porofrac
 
 
 
-    std::optional<std::string>
+    std::optional<SelfIntersection>
     self_intersection(const std::vector<Point<2>> &p, const double tol)
     {
       const unsigned int n = p.size();
@@ -190,13 +190,11 @@ namespace porofrac
                 const unsigned int a = (shared == j) ? i : j, b = (shared == j) ? (j + 1) % n : 1;
                 const Tensor<1, 2> u = p[a] - p[shared], v = p[b] - p[shared];
                 if (std::abs(cross(u, v)) <= tol * std::max(u.norm(), v.norm()) && u * v > 0)
-                  return "edges " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
-                         " fold back onto each other";
+                  return SelfIntersection{i, j, p[shared], true};
                 continue;
               }
             if (const auto x = segments_meet(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n], tol))
-              return "edges " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
-                     " meet at " + io::to_text(*x) + " (plane coordinates)";
+              return SelfIntersection{i, j, *x, false};
           }
       return std::nullopt;
     }
@@ -247,8 +245,32 @@ namespace porofrac
     PlanarPolygon::PlanarPolygon(const std::vector<Point<3>> &c, const Tensor<1, 3> &tangent)
         : corners(c)
     {
-      const Tensor<1, 3> n = vector_area(c);
-      normal               = n / n.norm();
+      // A wide triangle of corners: the two farthest apart and the one farthest from their line.
+      plane_triangle = {{0, 0, 0}};
+      for (unsigned int i = 0; i < c.size(); ++i)
+        for (unsigned int j = i + 1; j < c.size(); ++j)
+          if (c[i].distance(c[j]) > c[plane_triangle[0]].distance(c[plane_triangle[1]]))
+            plane_triangle = {{i, j, 0}};
+      const Point<3> &a = c[plane_triangle[0]], &b = c[plane_triangle[1]];
+      double          widest = -1;
+      for (unsigned int k = 0; k < c.size(); ++k)
+        {
+          const double w = cross_product_3d(b - a, c[k] - a).norm();
+          if (w > widest)
+            {
+              widest            = w;
+              plane_triangle[2] = k;
+            }
+        }
+      Tensor<1, 3> n = cross_product_3d(b - a, c[plane_triangle[2]] - a);
+      // n+ is the right-hand rule of the corner order (Newell); the triangle's normal stands in
+      // for polygons without area (e.g. bow-ties), which validation rejects.
+      const Tensor<1, 3> newell = vector_area(c);
+      if (newell.norm() > 1e-12 * a.distance(b) * a.distance(b) || n.norm() == 0)
+        n = newell;
+      else if (n * newell < 0)
+        n *= -1;
+      normal = n.norm() > 0 ? n / n.norm() : Tensor<1, 3>({0., 0., 1.});
       for (const auto &x : c)
         origin += x / double(c.size());
       Tensor<1, 3> t = tangent - (tangent * normal) * normal;
@@ -301,12 +323,19 @@ namespace porofrac
 
 
 
-    double
+    std::pair<unsigned int, double>
     PlanarPolygon::planarity_deviation() const
     {
-      double worst = 0;
-      for (const auto &x : corners)
-        worst = std::max(worst, std::abs(height(x)));
+      const Point<3> &a = corners[plane_triangle[0]];
+      Tensor<1, 3>    n =
+        cross_product_3d(corners[plane_triangle[1]] - a, corners[plane_triangle[2]] - a);
+      if (n.norm() == 0)
+        return {0, 0.};
+      n /= n.norm();
+      std::pair<unsigned int, double> worst = {0, 0.};
+      for (unsigned int k = 0; k < corners.size(); ++k)
+        if (std::abs((corners[k] - a) * n) > worst.second)
+          worst = {k, std::abs((corners[k] - a) * n)};
       return worst;
     }
 

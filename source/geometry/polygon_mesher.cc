@@ -263,6 +263,7 @@ namespace porofrac
         set_background_size(prm, 3, {});
         gmsh::option::setNumber("Mesh.Algorithm", prm.algorithm == "delaunay" ? 5 : 6);
         gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
+        gmsh::option::setNumber("Mesh.Optimize", prm.mesh_optimization ? 1 : 0);
       });
       session.run("Geometry", "gmsh could not mesh the domain", [] {
         gmsh::model::mesh::generate(3);

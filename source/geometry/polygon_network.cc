@@ -256,9 +256,7 @@ namespace porofrac
                              "fracture " + id_text +
                                " needs at least three corners (or 'disc ...', 'ellipse ...')");
           const Tensor<1, 3> first_edge = corners[1] - corners[0];
-          // The frame needs a non-zero area; validate() reports degenerate polygons.
-          if (vector_area(corners).norm() == 0)
-            throw InputError(parameter, "fracture " + id_text + " has zero area");
+          // validate() reports degenerate polygons.
           result.push_back({id, "polygon", PlanarPolygon(corners, first_edge)});
         }
       return result;

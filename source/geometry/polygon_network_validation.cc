@@ -34,26 +34,29 @@ namespace porofrac
                                std::to_string((k + 1) % corners.size() + 1) + " coincide at " +
                                io::to_text(corners[k]));
         const double size = polygon_diameter(corners);
-        check_input(f.polygon.area() > 1e-12 * size * size,
-                    parameter,
-                    name + " has zero area (its corners are collinear)");
         // Relative to the polygon's size: corners typed with a few digits stay acceptable.
-        const double deviation = f.polygon.planarity_deviation();
+        const auto [worst, deviation] = f.polygon.planarity_deviation();
         if (deviation > 1e-6 * size)
           {
-            unsigned int worst = 0;
-            for (unsigned int k = 0; k < corners.size(); ++k)
-              if (std::abs(f.polygon.height(corners[k])) >
-                  std::abs(f.polygon.height(corners[worst])))
-                worst = k;
+            const auto &t = f.polygon.plane_triangle;
             throw InputError(parameter,
                              name + " is not planar: corner " + std::to_string(worst + 1) + " " +
                                io::to_text(corners[worst]) + " lies " + io::to_text(deviation) +
-                               " m from the plane of the polygon");
+                               " m from the plane of corners " + std::to_string(t[0] + 1) + ", " +
+                               std::to_string(t[1] + 1) + " and " + std::to_string(t[2] + 1));
           }
-        if (const auto where = self_intersection(f.polygon.plane_corners, 1e-9 * size))
-          throw InputError(parameter, name + " is not a simple polygon: " + *where);
+        if (const auto x = self_intersection(f.polygon.plane_corners, 1e-9 * size))
+          throw InputError(parameter,
+                           name + " is not a simple polygon: edges " + std::to_string(x->i + 1) +
+                             " and " + std::to_string(x->j + 1) +
+                             (x->folds ? " fold back onto each other at " : " meet at ") +
+                             io::to_text(f.polygon.from_plane(x->where)));
+        check_input(f.polygon.area() > 1e-12 * size * size,
+                    parameter,
+                    name + " has zero area (its corners are collinear)");
       }
+
+
 
       /// The fracture against the box: inside (at least partly), not in a face of the box.
       void

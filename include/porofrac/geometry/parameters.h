@@ -36,9 +36,10 @@ namespace porofrac
       std::string  size_expression;            ///< optional gmsh MathEval size field in x, y, z
       std::string  refinement_regions;         ///< "(x0, y0) (x1, y1): h; ..."
       unsigned int global_refinements = 0;
-      bool delaunay_flips = false; ///< restore the Delaunay property after meshing/refinement
-      std::string          algorithm = "delaunay"; ///< delaunay | frontal-delaunay
-      RandomDiscParameters random_discs;           ///< 3D: the "Random discs" subsection
+      bool delaunay_flips   = false; ///< restore the Delaunay property after meshing/refinement
+      std::string algorithm = "delaunay";   ///< delaunay | frontal-delaunay
+      bool        mesh_optimization = true; ///< 3D: gmsh's tetrahedron optimization after Delaunay
+      RandomDiscParameters random_discs;    ///< 3D: the "Random discs" subsection
     };
   } // namespace geometry
 } // namespace porofrac

@@ -44,11 +44,17 @@ namespace porofrac
     bool
     inside_polygon(const Point<2> &x, const std::vector<Point<2>> &polygon);
 
-    /**
-     * Where the 2D polygon @p polygon crosses or touches itself, as a message ("edges 1 and 3
-     * cross at (x, y)"), or nothing for a simple polygon. Segments closer than @p tol meet.
-     */
-    std::optional<std::string>
+    /// Where a polygon meets itself: edges i and j (edge k joins corners k and k+1).
+    struct SelfIntersection
+    {
+      unsigned int i, j;
+      Point<2>     where;
+      bool         folds; ///< neighbouring edges folding back onto each other
+    };
+
+    /// Where the 2D polygon @p polygon crosses or touches itself, or nothing for a simple
+    /// polygon. Segments closer than @p tol meet.
+    std::optional<SelfIntersection>
     self_intersection(const std::vector<Point<2>> &polygon, const double tol);
 
     /// Ear-clipping triangulation of a simple 2D polygon (either orientation), as corner triples.
@@ -72,6 +78,9 @@ namespace porofrac
       Tensor<1, 3>          normal, t1, t2;
       std::vector<Point<2>> plane_corners;
       Point<3>              box_lo, box_hi; ///< bounding box
+      /// Three corners spanning a wide triangle (the two farthest apart, the one farthest from
+      /// their line): their plane is the reference of the planarity test.
+      std::array<unsigned int, 3> plane_triangle;
 
       Point<2>
       to_plane(const Point<3> &x) const;
@@ -82,8 +91,8 @@ namespace porofrac
       height(const Point<3> &x) const;
       double
       area() const;
-      /// Largest distance of a corner from the plane.
-      double
+      /// The corner farthest from the plane of the corners plane_triangle, and its distance.
+      std::pair<unsigned int, double>
       planarity_deviation() const;
       /// Euclidean distance from @p x to the polygon (a 2D region of the plane).
       double
