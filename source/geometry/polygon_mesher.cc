@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include <gmsh.h>
@@ -79,40 +80,43 @@ namespace porofrac
 
 
 
-      /// A point inside the surface @p tag (model entity), sampled on its parametric domain.
-      Point<3>
-      point_inside_surface(const int tag)
+      /// Is @p x outside the box (+1), inside it (-1), or too close to its boundary to tell (0)?
+      int
+      side_of_box(const Point<3> &x, const PolygonNetwork &network)
+      {
+        const double tol    = 1e3 * network.tolerance();
+        double       margin = std::numeric_limits<double>::infinity();
+        for (unsigned int d = 0; d < 3; ++d)
+          margin = std::min({margin, x[d] - network.lo[d], network.hi[d] - x[d]});
+        return margin < -tol ? 1 : margin > tol ? -1 : 0;
+      }
+
+      /**
+       * Does the fragment surface @p tag (a piece of a fracture, entirely inside or entirely
+       * outside the box) lie outside the box? Decided by points inside the piece, sampled on its
+       * parametric domain; points on the box's faces (the piece's edges) do not count.
+       */
+      bool
+      outside_box(const int tag, const PolygonNetwork &network)
       {
         std::vector<double> lo, hi;
         gmsh::model::getParametrizationBounds(2, tag, lo, hi);
-        const unsigned int n = 9;
+        const unsigned int n = 16;
         for (unsigned int i = 1; i < n; ++i)
           for (unsigned int j = 1; j < n; ++j)
             {
               const std::vector<double> uv = {lo[0] + (hi[0] - lo[0]) * i / n,
                                               lo[1] + (hi[1] - lo[1]) * j / n};
-              if (gmsh::model::isInside(2, tag, uv) > 0)
-                {
-                  std::vector<double> x;
-                  gmsh::model::getValue(2, tag, uv, x);
-                  return Point<3>(x[0], x[1], x[2]);
-                }
+              if (gmsh::model::isInside(2, tag, uv) <= 0)
+                continue;
+              std::vector<double> x;
+              gmsh::model::getValue(2, tag, uv, x);
+              if (const int side = side_of_box(Point<3>(x[0], x[1], x[2]), network))
+                return side > 0;
             }
         double x, y, z;
         gmsh::model::occ::getCenterOfMass(2, tag, x, y, z);
-        return Point<3>(x, y, z);
-      }
-
-
-
-      bool
-      outside_box(const Point<3> &x, const PolygonNetwork &network)
-      {
-        const double tol = 1e3 * network.tolerance();
-        for (unsigned int d = 0; d < 3; ++d)
-          if (x[d] < network.lo[d] - tol || x[d] > network.hi[d] + tol)
-            return true;
-        return false;
+        return side_of_box(Point<3>(x, y, z), network) > 0;
       }
 
 
@@ -139,7 +143,7 @@ namespace porofrac
           for (const auto &[dim, tag] : map[k + 1])
             if (dim == 2)
               {
-                if (outside_box(point_inside_surface(tag), network))
+                if (outside_box(tag, network))
                   outside.emplace_back(2, tag);
                 else
                   pieces[k].push_back(tag);

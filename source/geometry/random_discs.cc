@@ -3,6 +3,7 @@
 #include <porofrac/geometry/random_discs.h>
 
 #include <cmath>
+#include <optional>
 #include <random>
 #include <set>
 
@@ -99,6 +100,7 @@ namespace porofrac
                 const std::vector<PlanarPolygon>                              &faces,
                 const Segments                                                &segments,
                 const double                                                   h,
+                const double                                                   min_sine,
                 std::vector<std::pair<unsigned int, std::array<Point<3>, 2>>> &mine)
       {
         const double tol = network.tolerance();
@@ -109,14 +111,28 @@ namespace porofrac
             return "in one plane with a fracture it overlaps";
         if (h <= 0)
           return "";
+        // A corner just beside a polygon it does not touch leaves a sliver between them.
+        auto corner_near = [&](const PlanarPolygon &p, const PlanarPolygon &q) {
+          for (const auto &x : p.corners)
+            {
+              const double d = q.distance(x);
+              if (d > tol && d < h)
+                return true;
+            }
+          return false;
+        };
         for (const auto &face : faces)
           {
             const double d = polygon_distance(c, face);
             if (d > tol && d < h)
               return "closer than h to the boundary";
+            if (corner_near(c, face))
+              return "a corner closer than h to the boundary";
             const auto s = intersection_segment(c, face, tol);
             if (s && (*s)[0].distance((*s)[1]) < h)
               return "cuts the boundary in a segment shorter than h";
+            if (s && cross_product_3d(c.normal, face.normal).norm() < min_sine)
+              return "cuts the boundary at less than the minimum angle";
           }
         for (unsigned int k = 0; k < network.fractures.size(); ++k)
           {
@@ -124,11 +140,15 @@ namespace porofrac
             const double d = polygon_distance(c, f);
             if (d > tol && d < h)
               return "closer than h to a fracture it does not meet";
+            if (corner_near(c, f) || corner_near(f, c))
+              return "a corner closer than h to a fracture";
             const auto s = intersection_segment(c, f, tol);
             if (!s)
               continue;
             if ((*s)[0].distance((*s)[1]) < h)
               return "meets a fracture in a segment shorter than h";
+            if (cross_product_3d(c.normal, f.normal).norm() < min_sine)
+              return "meets a fracture at less than the minimum angle";
             for (const auto &other : segments[k])
               {
                 const double e = segment_distance((*s)[0], (*s)[1], other[0], other[1]);
@@ -195,9 +215,17 @@ namespace porofrac
         Patterns::Double(0),
         "h, in m. 0: a candidate disc is redrawn only when it would be invalid input (outside "
         "the domain, or overlapping a fracture in its plane). h > 0: also when it would make a "
-        "feature smaller than h (it comes closer than h to a fracture or the boundary without "
-        "meeting it, meets one in a segment shorter than h, or its intersections come closer "
-        "than h to others on one fracture). Rejections are counted in the mesh report.");
+        "feature smaller than h (it, or one of its corners, comes closer than h to a fracture or "
+        "the boundary without touching it, a fracture's corner comes closer than h to it, it "
+        "meets a fracture or the boundary in a segment shorter than h, or its intersections "
+        "come closer than h to others on one fracture). Rejections are counted in the mesh "
+        "report.");
+      prm.declare_entry("Minimum angle",
+                        "0",
+                        Patterns::Double(0, 90),
+                        "With a positive Minimum feature size: a candidate disc that meets a "
+                        "fracture or cuts the boundary at an angle below this (degrees) is "
+                        "redrawn too (thin wedges need tiny cells).");
       prm.declare_entry("Max attempts",
                         "100",
                         Patterns::Integer(1),
@@ -224,6 +252,7 @@ namespace porofrac
       sides                = prm.get_integer("Sides");
       centre_region        = prm.get("Centre region");
       minimum_feature_size = prm.get_double("Minimum feature size");
+      minimum_angle        = prm.get_double("Minimum angle");
       max_attempts         = prm.get_integer("Max attempts");
       prm.leave_subsection();
     }
@@ -277,16 +306,32 @@ namespace porofrac
             centre[d] = lo[d] + u() * (hi[d] - lo[d]);
           const double       radius = draw_radius(p, u);
           const Tensor<1, 3> normal = draw_normal(p, mean, u);
-          // A random turn of the inscribed polygon, so that corners do not line up.
-          const double       turn = 2 * M_PI * u();
-          const Tensor<1, 3> e    = default_tangent(normal);
-          const Tensor<1, 3> t1 = std::cos(turn) * e + std::sin(turn) * cross_product_3d(normal, e);
-          const PlanarPolygon disc(
-            PolygonNetwork::ellipse_corners(centre, normal, t1, radius, radius, p.sides), t1);
+          const double       turn   = 2 * M_PI * u();
 
+          // The disc is the draw; its inscribed polygon may turn (eight tries within one side)
+          // to keep its corners away from other fractures and the boundary.
+          std::string                                                   why;
           std::vector<std::pair<unsigned int, std::array<Point<3>, 2>>> mine;
-          const std::string                                             why =
-            rejection(disc, network, faces, segments, p.minimum_feature_size, mine);
+          std::optional<PlanarPolygon>                                  disc;
+          for (unsigned int k = 0; k < 8; ++k)
+            {
+              const double       angle = turn + k * 2 * M_PI / p.sides / 8;
+              const Tensor<1, 3> e     = default_tangent(normal);
+              const Tensor<1, 3> t1 =
+                std::cos(angle) * e + std::sin(angle) * cross_product_3d(normal, e);
+              disc.emplace(
+                PolygonNetwork::ellipse_corners(centre, normal, t1, radius, radius, p.sides), t1);
+              mine.clear();
+              why = rejection(*disc,
+                              network,
+                              faces,
+                              segments,
+                              p.minimum_feature_size,
+                              std::sin(p.minimum_angle * M_PI / 180),
+                              mine);
+              if (why.rfind("a corner", 0) != 0)
+                break;
+            }
           if (!why.empty())
             {
               ++statistics.rejected[why];
@@ -298,7 +343,7 @@ namespace porofrac
               segments[k].push_back(s);
               segments.back().push_back(s);
             }
-          network.fractures.push_back({p.first_id + statistics.accepted, "disc", disc});
+          network.fractures.push_back({p.first_id + statistics.accepted, "disc", *disc});
           ++statistics.accepted;
         }
       return statistics;

@@ -38,6 +38,7 @@ namespace porofrac
       unsigned int sides                = 12;
       std::string  centre_region;              ///< "(x0, y0, z0) (x1, y1, z1)"; empty: the box
       double       minimum_feature_size = 0;   ///< m; 0: reject only invalid discs
+      double       minimum_angle        = 0;   ///< degrees; with h > 0 (fractures, faces)
       unsigned int max_attempts         = 100; ///< per disc
     };
 
@@ -53,9 +54,12 @@ namespace porofrac
      * candidate is redrawn, and counted by reason, when it would be invalid input (outside the
      * box, or in one plane with a fracture it overlaps) and, with a positive minimum feature size
      * h, when it would make a feature smaller than h that the mesh would have to resolve: it
-     * comes closer than h to a fracture or a face of the box without meeting it, meets one in a
+     * comes closer than h to a fracture or a face of the box without meeting it, has a
+     * corner closer than h to one (or a fracture has a corner closer than h to it) without
+     * touching it, meets one in a
      * segment shorter than h, or its intersection segments come closer than h to others on the
-     * same fracture without meeting them.
+     * same fracture without meeting them; and, with a minimum angle, when it meets a fracture or
+     * cuts the boundary at a smaller angle.
      */
     RandomDiscStatistics
     add_random_discs(const RandomDiscParameters &parameters, PolygonNetwork &network);
