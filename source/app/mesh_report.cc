@@ -70,6 +70,7 @@ namespace porofrac
             phase["phase"]          = p.name;
             phase["seconds"]        = p.seconds;
             phase["peak_memory_mb"] = p.peak_memory_mb;
+            phase["memory_mb"]      = p.memory_mb;
             phases.push_back(phase);
           }
       }

@@ -180,6 +180,48 @@ namespace porofrac
         return numbers::invalid_unsigned_int;
       }
 
+      /// The geometric fields of the fracture face made of raw face @p p (cells come later).
+      template <int dim>
+      FractureFace<dim>
+      geometric_face(const Pending<dim>                         &p,
+                     const RawMesh<dim>                         &raw,
+                     const std::vector<FaceKey<dim>>            &oriented,
+                     const std::vector<double>                  &s_begin,
+                     const std::map<unsigned int, unsigned int> &node_of_vertex)
+      {
+        const auto       &f = oriented[p.raw_face];
+        FractureFace<dim> face;
+        face.fracture_id     = raw.fracture_faces[p.raw_face].tag;
+        face.normal          = p.normal;
+        face.tangent         = p.tangent;
+        face.tangent2        = p.tangent2;
+        face.measure         = face_measure<dim>(raw.vertices, f);
+        face.centre          = face_centre<dim>(raw.vertices, f);
+        face.abscissa_begin  = s_begin[p.raw_face];
+        face.abscissa_end    = (dim == 2) ? s_begin[p.raw_face] + face.measure : 0.;
+        face.abscissa        = 0.5 * (face.abscissa_begin + face.abscissa_end);
+        face.distance_to_tip = std::numeric_limits<double>::infinity();
+        for (unsigned int k = 0; k < dim; ++k)
+          face.nodes[k] = node_of_vertex.at(f[k]);
+        return face;
+      }
+
+      /// The Triangulation's cells: the cut cells with their materials.
+      template <int dim>
+      std::vector<CellData<dim>>
+      cell_data(const std::vector<std::array<unsigned int, dim + 1>> &cut_cells,
+                const RawMesh<dim>                                   &raw)
+      {
+        std::vector<CellData<dim>> cells(cut_cells.size(), CellData<dim>(dim + 1));
+        for (unsigned int c = 0; c < cut_cells.size(); ++c)
+          {
+            for (unsigned int i = 0; i < dim + 1; ++i)
+              cells[c].vertices[i] = cut_cells[c][i];
+            cells[c].material_id = raw.cell_material.empty() ? 0 : raw.cell_material[c];
+          }
+        return cells;
+      }
+
       /// Node types: in 2D from the faces meeting at a node, in 3D from its side regions.
       template <int dim>
       void
@@ -308,20 +350,11 @@ namespace porofrac
       build_log.add("cut", timer);
 
       // --- The Triangulation.
-      {
-        std::vector<CellData<dim>> cell_data(cut_cells.size(), CellData<dim>(dim + 1));
-        for (unsigned int c = 0; c < cut_cells.size(); ++c)
-          {
-            for (unsigned int i = 0; i < dim + 1; ++i)
-              cell_data[c].vertices[i] = cut_cells[c][i];
-            cell_data[c].material_id = raw.cell_material.empty() ? 0 : raw.cell_material[c];
-          }
-        if constexpr (dim == 2)
-          subcell.boundary_lines = boundary_objects;
-        else
-          subcell.boundary_quads = boundary_objects;
-        triangulation.create_triangulation(cut_vertices, cell_data, subcell);
-      }
+      if constexpr (dim == 2)
+        subcell.boundary_lines = boundary_objects;
+      else
+        subcell.boundary_quads = boundary_objects;
+      triangulation.create_triangulation(cut_vertices, cell_data<dim>(cut_cells, raw), subcell);
       simplex_mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       build_log.add("triangulation", timer);
 
@@ -348,20 +381,8 @@ namespace porofrac
       const auto cell_of = cells_by_index<dim>(triangulation, cut_cells);
       for (const auto &p : pending)
         {
-          FractureFace<dim> face;
-          face.index           = fracture_faces.size();
-          face.fracture_id     = raw.fracture_faces[p.raw_face].tag;
-          face.normal          = p.normal;
-          face.tangent         = p.tangent;
-          face.tangent2        = p.tangent2;
-          face.measure         = face_measure<dim>(V, oriented[p.raw_face]);
-          face.centre          = face_centre<dim>(V, oriented[p.raw_face]);
-          face.abscissa_begin  = s_begin[p.raw_face];
-          face.abscissa_end    = (dim == 2) ? s_begin[p.raw_face] + face.measure : 0.;
-          face.abscissa        = 0.5 * (face.abscissa_begin + face.abscissa_end);
-          face.distance_to_tip = std::numeric_limits<double>::infinity();
-          for (unsigned int k = 0; k < dim; ++k)
-            face.nodes[k] = node_of_vertex.at(oriented[p.raw_face][k]);
+          FractureFace<dim> face = geometric_face<dim>(p, raw, oriented, s_begin, node_of_vertex);
+          face.index             = fracture_faces.size();
           for (unsigned int side = 0; side < 2; ++side)
             {
               face.cell[side]    = cell_of[p.cells[side]];

@@ -26,6 +26,7 @@ namespace porofrac
         std::string name;
         double      seconds;
         double      peak_memory_mb; ///< VmHWM after the phase
+        double      memory_mb;      ///< VmRSS after the phase
       };
       std::vector<Phase>   phases;
       RandomDiscStatistics random_discs;
@@ -36,7 +37,7 @@ namespace porofrac
       {
         dealii::Utilities::System::MemoryStats memory;
         dealii::Utilities::System::get_memory_stats(memory);
-        phases.push_back({name, timer.wall_time(), memory.VmHWM / 1024.});
+        phases.push_back({name, timer.wall_time(), memory.VmHWM / 1024., memory.VmRSS / 1024.});
         timer.restart();
       }
     };
