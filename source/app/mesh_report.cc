@@ -109,6 +109,9 @@ namespace porofrac
           << "  fracture faces: " << q.n_fracture_faces
           << ", with coincident sides in two cells: " << n_matching << "\n"
           << "  measure of the cells: " << measure << "\n";
+      if (mesh.n_split_fracture_faces > 0)
+        out << "  fracture faces with all vertices on tips, split at their centre: "
+            << mesh.n_split_fracture_faces << "\n";
       io::Json fractures = io::Json::array();
       for (const unsigned int id : mesh.fracture_ids)
         {
@@ -154,6 +157,7 @@ namespace porofrac
       m["n_fracture_faces"]                       = q.n_fracture_faces;
       m["n_fracture_faces_with_coincident_sides"] = n_matching;
       m["measure"]                                = measure;
+      m["n_split_fracture_faces"]                 = mesh.n_split_fracture_faces;
       m["fractures"]                              = fractures;
       m["n_tips"]                                 = n_tips;
       m["n_corners"]                              = n_corners;

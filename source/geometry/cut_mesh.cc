@@ -283,13 +283,27 @@ namespace porofrac
       Timer        timer;
       RawMesh<dim> raw = raw_in;
       raw.orient_cells();
-      n_uncut_vertices = raw.vertices.size();
-      const auto &V    = raw.vertices;
+      const auto &V = raw.vertices;
 
-      const MeshTopology<dim>                        topology(raw);
-      std::vector<std::array<unsigned int, dim + 1>> cut_cells    = raw.cells;
-      std::vector<Point<dim>>                        cut_vertices = V;
-      auto copies_of_vertex = cut_along_fractures<dim>(raw, topology, cut_cells, cut_vertices);
+      // The cut, after splitting the fracture faces whose sides it would leave joined.
+      std::unique_ptr<MeshTopology<dim>>                topology_pointer;
+      std::vector<std::array<unsigned int, dim + 1>>    cut_cells;
+      std::vector<Point<dim>>                           cut_vertices;
+      std::map<unsigned int, std::vector<unsigned int>> copies_of_vertex;
+      for (;;)
+        {
+          topology_pointer = std::make_unique<MeshTopology<dim>>(raw);
+          cut_cells        = raw.cells;
+          cut_vertices     = V;
+          copies_of_vertex =
+            cut_along_fractures<dim>(raw, *topology_pointer, cut_cells, cut_vertices);
+          const auto joined = unseparated_fracture_faces<dim>(raw, *topology_pointer, cut_cells);
+          if (joined.empty())
+            break;
+          n_split_fracture_faces += split_fracture_faces<dim>(raw, *topology_pointer, joined);
+        }
+      const MeshTopology<dim> &topology = *topology_pointer;
+      n_uncut_vertices                  = V.size();
 
       // Maps an uncut face of cell c to the cut vertex indices of that cell.
       auto cut_face = [&](const unsigned int c, const FaceKey<dim> &uncut) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <set>
 
 namespace porofrac
 {
@@ -196,6 +197,93 @@ namespace porofrac
 
 
 
+    template <int dim>
+    std::vector<unsigned int>
+    unseparated_fracture_faces(const RawMesh<dim>                                   &raw,
+                               const MeshTopology<dim>                              &topology,
+                               const std::vector<std::array<unsigned int, dim + 1>> &cut_cells)
+    {
+      std::vector<unsigned int> result;
+      for (unsigned int k = 0; k < raw.fracture_faces.size(); ++k)
+        {
+          const auto &f     = raw.fracture_faces[k].vertices;
+          const auto  cells = topology.cells_of_face(sorted_face<dim>(f));
+          bool        same  = true;
+          for (const unsigned int v : f)
+            {
+              // The copy of v in each of the two cells.
+              std::array<unsigned int, 2> copy;
+              for (unsigned int side = 0; side < 2; ++side)
+                for (unsigned int i = 0; i < dim + 1; ++i)
+                  if (raw.cells[cells[side]][i] == v)
+                    copy[side] = cut_cells[cells[side]][i];
+              same = same && copy[0] == copy[1];
+            }
+          if (same)
+            result.push_back(k);
+        }
+      return result;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    split_fracture_faces(RawMesh<dim>                    &raw,
+                         const MeshTopology<dim>         &topology,
+                         const std::vector<unsigned int> &faces)
+    {
+      // The topology describes the cells before any split: a face next to a cell split already
+      // waits for the next round.
+      std::set<unsigned int> touched;
+      unsigned int           n_split = 0;
+      for (const unsigned int k : faces)
+        {
+          const auto f     = raw.fracture_faces[k].vertices;
+          const auto cells = topology.cells_of_face(sorted_face<dim>(f));
+          if (touched.count(cells[0]) || touched.count(cells[1]))
+            continue;
+          touched.insert(cells.begin(), cells.end());
+          ++n_split;
+          const unsigned int m = raw.vertices.size();
+          raw.vertices.push_back(face_centre<dim>(raw.vertices, f));
+          // Each cell f + {d} becomes the dim cells f_j + {d}, f_j = f with vertex j -> m.
+          for (const unsigned int c : cells)
+            {
+              const auto cell = raw.cells[c];
+              for (unsigned int j = 0; j < dim; ++j)
+                {
+                  auto child = cell;
+                  for (auto &v : child)
+                    if (v == f[j])
+                      v = m;
+                  if (j == 0)
+                    raw.cells[c] = child;
+                  else
+                    {
+                      raw.cells.push_back(child);
+                      if (!raw.cell_material.empty())
+                        raw.cell_material.push_back(raw.cell_material[c]);
+                    }
+                }
+            }
+          const auto whole = raw.fracture_faces[k];
+          for (unsigned int j = 0; j < dim; ++j)
+            {
+              auto piece        = whole;
+              piece.vertices[j] = m;
+              if (j == 0)
+                raw.fracture_faces[k] = piece;
+              else
+                raw.fracture_faces.push_back(piece);
+            }
+        }
+      raw.orient_cells();
+      return n_split;
+    }
+
+
+
     template class MeshTopology<2>;
     template class MeshTopology<3>;
     template std::map<unsigned int, std::vector<unsigned int>>
@@ -208,5 +296,21 @@ namespace porofrac
                            const MeshTopology<3> &,
                            std::vector<std::array<unsigned int, 4>> &,
                            std::vector<Point<3>> &);
+    template std::vector<unsigned int>
+    unseparated_fracture_faces<2>(const RawMesh<2> &,
+                                  const MeshTopology<2> &,
+                                  const std::vector<std::array<unsigned int, 3>> &);
+    template std::vector<unsigned int>
+    unseparated_fracture_faces<3>(const RawMesh<3> &,
+                                  const MeshTopology<3> &,
+                                  const std::vector<std::array<unsigned int, 4>> &);
+    template unsigned int
+    split_fracture_faces<2>(RawMesh<2> &,
+                            const MeshTopology<2> &,
+                            const std::vector<unsigned int> &);
+    template unsigned int
+    split_fracture_faces<3>(RawMesh<3> &,
+                            const MeshTopology<3> &,
+                            const std::vector<unsigned int> &);
   } // namespace geometry
 } // namespace porofrac

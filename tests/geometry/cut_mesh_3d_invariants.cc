@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Invariants of the 3D cut mesh for the fracture configurations PoroFrac must handle (a fracture
 // with tips all round, an X line, a T line, three fractures meeting at a point, a fracture
-// cutting the boundary, a disc, a plane through the box, three planes through the box), each
+// cutting the boundary, a triangle meshed as one face, a disc, a plane through the box, three
+// planes through the box), each
 // from gmsh and after one uniform (Bey) refinement:
 // - the cells tile the box (volume);
 // - on each side, the fracture faces add up to each polygon's area inside the box;
@@ -437,7 +438,7 @@ namespace
         areas.push_back(area_inside_box(f.polygon, Point<3>(0, 0, 0), Point<3>(1, 1, 1)));
       }
     std::cout << c.name << ", " << refinements << " refinements: " << mesh->fracture_faces.size()
-              << " fracture faces" << std::endl;
+              << " fracture faces, " << mesh->n_split_fracture_faces << " split" << std::endl;
     check_sides(*mesh, fractures, areas);
     check_table(*mesh, fractures, polygons);
     check_copies_and_edges(*mesh, polygons, c, sphere);
@@ -483,6 +484,13 @@ main()
      0,
      1.6,
      0.4,
+     false},
+    {"a fracture of one face (split at its centre before the cut)",
+     "1: (0.4, 0.4, 0.5) (0.6, 0.4, 0.5) (0.5, 0.55, 0.5)",
+     0.4,
+     0,
+     0.2 + 2 * std::sqrt(0.0325),
+     0,
      false},
     {"disc",
      "1: disc centre (0.5, 0.5, 0.5) normal (1, 1, 1) radius 0.3 sides 12",

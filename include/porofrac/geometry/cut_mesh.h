@@ -154,6 +154,12 @@ namespace porofrac
       std::vector<types::boundary_id> outer_boundary_ids;
       /// Number of vertices before cutting.
       unsigned int n_uncut_vertices;
+      /**
+       * Fracture faces the cut would have left joined because all their vertices lie on tips (a
+       * face spanning a corner of a fracture): each was split at its centre, with its two cells,
+       * before the cut.
+       */
+      unsigned int n_split_fracture_faces = 0;
       /// Timings and peak memory of the phases that built the mesh (make_cut_mesh adds the
       /// meshing and refinement before the cut).
       MeshBuildLog build_log;

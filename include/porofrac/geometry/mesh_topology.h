@@ -67,6 +67,31 @@ namespace porofrac
                         const MeshTopology<dim>                        &topology,
                         std::vector<std::array<unsigned int, dim + 1>> &cut_cells,
                         std::vector<Point<dim>>                        &cut_vertices);
+
+    /**
+     * The fracture faces (raw indices) whose two sides the cut left joined: every vertex of the
+     * face has one side region (it lies on tip edges, or where a tip edge meets the boundary),
+     * so the cells on both sides share all its vertices. This happens where one fracture face
+     * spans a corner of a fracture.
+     */
+    template <int dim>
+    std::vector<unsigned int>
+    unseparated_fracture_faces(const RawMesh<dim>                                   &raw,
+                               const MeshTopology<dim>                              &topology,
+                               const std::vector<std::array<unsigned int, dim + 1>> &cut_cells);
+
+    /**
+     * Splits each of the fracture faces @p faces (raw indices) at its centre, and the two cells
+     * on its sides with it (dim children each): the new vertex lies inside the fracture, so the
+     * cut opens the pieces. Cells are oriented again afterwards. A face next to a cell that an
+     * earlier face of the list split is left for the next call (the topology describes the
+     * cells before the splits); returns the number of faces split.
+     */
+    template <int dim>
+    unsigned int
+    split_fracture_faces(RawMesh<dim>                    &raw,
+                         const MeshTopology<dim>         &topology,
+                         const std::vector<unsigned int> &faces);
   } // namespace geometry
 } // namespace porofrac
 
