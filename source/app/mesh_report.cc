@@ -158,6 +158,13 @@ namespace porofrac
       m["n_fracture_faces_with_coincident_sides"] = n_matching;
       m["measure"]                                = measure;
       m["n_split_fracture_faces"]                 = mesh.n_split_fracture_faces;
+      io::Json &copies                            = m["fracture_vertices_by_copies"];
+      copies                                      = io::Json::object();
+      for (const auto &node : mesh.fracture_nodes)
+        {
+          io::Json &n = copies[std::to_string(node.copies.size())];
+          n           = static_cast<unsigned int>(n.as_number()) + 1;
+        }
       m["fractures"]                              = fractures;
       m["n_tips"]                                 = n_tips;
       m["n_corners"]                              = n_corners;
