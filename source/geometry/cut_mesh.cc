@@ -277,98 +277,130 @@ namespace porofrac
 
 
 
+    namespace
+    {
+      /// The mesh being cut: the uncut mesh (with split faces), its topology, the cut cells and
+      /// vertices, and the boundary descriptions for the Triangulation.
+      template <int dim>
+      struct Cut
+      {
+        RawMesh<dim>                                      raw;
+        std::unique_ptr<MeshTopology<dim>>                topology;
+        std::vector<std::array<unsigned int, dim + 1>>    cells;
+        std::vector<Point<dim>>                           vertices;
+        std::map<unsigned int, std::vector<unsigned int>> copies_of_vertex;
+        std::vector<FaceKey<dim>>                         oriented; ///< raw fracture faces
+        std::vector<double>                               s_begin;
+        std::vector<CellData<dim - 1>>                    boundary_objects;
+        std::vector<Pending<dim>>                         pending;
+        unsigned int                                      n_split = 0;
+
+        /// Cut vertex indices of the uncut face @p uncut of cell @p c.
+        FaceKey<dim>
+        cut_face(const unsigned int c, const FaceKey<dim> &uncut) const
+        {
+          FaceKey<dim> result;
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int i = 0; i < dim + 1; ++i)
+              if (raw.cells[c][i] == uncut[k])
+                result[k] = cells[c][i];
+          return result;
+        }
+
+        void
+        add_boundary(const FaceKey<dim> &f, const types::boundary_id id)
+        {
+          CellData<dim - 1> data(dim);
+          for (unsigned int k = 0; k < dim; ++k)
+            data.vertices[k] = f[k];
+          data.boundary_id = id;
+          boundary_objects.push_back(data);
+        }
+      };
+
+      /// The cut, after splitting the fracture faces whose sides it would leave joined.
+      template <int dim>
+      void
+      cut_with_splits(Cut<dim> &cut)
+      {
+        for (;;)
+          {
+            cut.topology = std::make_unique<MeshTopology<dim>>(cut.raw);
+            cut.cells    = cut.raw.cells;
+            cut.vertices = cut.raw.vertices;
+            cut.copies_of_vertex =
+              cut_along_fractures<dim>(cut.raw, *cut.topology, cut.cells, cut.vertices);
+            const auto joined = unseparated_fracture_faces<dim>(cut.raw, *cut.topology, cut.cells);
+            if (joined.empty())
+              return;
+            cut.n_split += split_fracture_faces<dim>(cut.raw, *cut.topology, joined);
+          }
+      }
+
+      /// Outer boundary faces with their ids (returned), then both sides of each fracture face.
+      template <int dim>
+      std::set<types::boundary_id>
+      describe_boundaries(Cut<dim> &cut)
+      {
+        const auto                  &raw = cut.raw;
+        std::set<types::boundary_id> outer_ids;
+        for (const auto &f : raw.boundary_faces)
+          {
+            POROFRAC_CHECK_INPUT(f.tag < first_fracture_boundary_id,
+                                 InputError("Geometry",
+                                            "outer boundary ids must be below " +
+                                              std::to_string(first_fracture_boundary_id)));
+            const FaceKey<dim> key   = sorted_face<dim>(f.vertices);
+            const auto         cells = cut.topology->cells_of_face(key);
+            POROFRAC_CHECK_INPUT(cells.size() == 1,
+                                 InputError("Geometry",
+                                            "a boundary face at " +
+                                              io::to_text(face_centre<dim>(raw.vertices, key)) +
+                                              " is not on the outer boundary of the mesh"));
+            cut.add_boundary(cut.cut_face(cells[0], f.vertices), f.tag);
+            outer_ids.insert(f.tag);
+          }
+        const auto frames = fracture_frames<dim>(raw);
+        for (unsigned int k = 0; k < raw.fracture_faces.size(); ++k)
+          {
+            Pending<dim> p = sides_of_face<dim>(raw, *cut.topology, k, cut.oriented[k], frames);
+            for (unsigned int side = 0; side < 2; ++side)
+              {
+                p.cut_faces[side] = cut.cut_face(p.cells[side], raw.fracture_faces[k].vertices);
+                cut.add_boundary(p.cut_faces[side],
+                                 fracture_boundary_id(raw.fracture_faces[k].tag, Side(side)));
+              }
+            cut.pending.push_back(p);
+          }
+        return outer_ids;
+      }
+    } // namespace
+
+
+
     template <int dim>
     CutMesh<dim>::CutMesh(const RawMesh<dim> &raw_in)
     {
-      Timer        timer;
-      RawMesh<dim> raw = raw_in;
-      raw.orient_cells();
-      const auto &V = raw.vertices;
-
-      // The cut, after splitting the fracture faces whose sides it would leave joined.
-      std::unique_ptr<MeshTopology<dim>>                topology_pointer;
-      std::vector<std::array<unsigned int, dim + 1>>    cut_cells;
-      std::vector<Point<dim>>                           cut_vertices;
-      std::map<unsigned int, std::vector<unsigned int>> copies_of_vertex;
-      for (;;)
-        {
-          topology_pointer = std::make_unique<MeshTopology<dim>>(raw);
-          cut_cells        = raw.cells;
-          cut_vertices     = V;
-          copies_of_vertex =
-            cut_along_fractures<dim>(raw, *topology_pointer, cut_cells, cut_vertices);
-          const auto joined = unseparated_fracture_faces<dim>(raw, *topology_pointer, cut_cells);
-          if (joined.empty())
-            break;
-          n_split_fracture_faces += split_fracture_faces<dim>(raw, *topology_pointer, joined);
-        }
-      const MeshTopology<dim> &topology = *topology_pointer;
-      n_uncut_vertices                  = V.size();
-
-      // Maps an uncut face of cell c to the cut vertex indices of that cell.
-      auto cut_face = [&](const unsigned int c, const FaceKey<dim> &uncut) {
-        FaceKey<dim> result;
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int i = 0; i < dim + 1; ++i)
-            if (raw.cells[c][i] == uncut[k])
-              result[k] = cut_cells[c][i];
-        return result;
-      };
-
-      std::vector<FaceKey<dim>> oriented;
-      std::vector<double>       s_begin;
-      chain_fractures<dim>(raw, oriented, s_begin, fracture_ids);
-
-      // --- Boundary descriptions for the Triangulation: outer faces, then both fracture sides.
-      SubCellData                    subcell;
-      std::vector<CellData<dim - 1>> boundary_objects;
-      auto add_boundary = [&](const FaceKey<dim> &f, const types::boundary_id id) {
-        CellData<dim - 1> data(dim);
-        for (unsigned int k = 0; k < dim; ++k)
-          data.vertices[k] = f[k];
-        data.boundary_id = id;
-        boundary_objects.push_back(data);
-      };
-      std::set<types::boundary_id> outer_ids;
-      for (const auto &f : raw.boundary_faces)
-        {
-          POROFRAC_CHECK_INPUT(f.tag < first_fracture_boundary_id,
-                               InputError("Geometry",
-                                          "outer boundary ids must be below " +
-                                            std::to_string(first_fracture_boundary_id)));
-          const FaceKey<dim> key   = sorted_face<dim>(f.vertices);
-          const auto         cells = topology.cells_of_face(key);
-          POROFRAC_CHECK_INPUT(cells.size() == 1,
-                               InputError("Geometry",
-                                          "a boundary face at " +
-                                            io::to_text(face_centre<dim>(V, key)) +
-                                            " is not on the outer boundary of the mesh"));
-          add_boundary(cut_face(cells[0], f.vertices), f.tag);
-          outer_ids.insert(f.tag);
-        }
+      Timer    timer;
+      Cut<dim> cut;
+      cut.raw = raw_in;
+      cut.raw.orient_cells();
+      cut_with_splits(cut);
+      const auto              &raw      = cut.raw;
+      const MeshTopology<dim> &topology = *cut.topology;
+      n_uncut_vertices                  = raw.vertices.size();
+      n_split_fracture_faces            = cut.n_split;
+      chain_fractures<dim>(raw, cut.oriented, cut.s_begin, fracture_ids);
+      const auto outer_ids = describe_boundaries(cut);
       outer_boundary_ids.assign(outer_ids.begin(), outer_ids.end());
-
-      const auto                frames = fracture_frames<dim>(raw);
-      std::vector<Pending<dim>> pending;
-      for (unsigned int k = 0; k < raw.fracture_faces.size(); ++k)
-        {
-          Pending<dim> p = sides_of_face<dim>(raw, topology, k, oriented[k], frames);
-          for (unsigned int side = 0; side < 2; ++side)
-            {
-              p.cut_faces[side] = cut_face(p.cells[side], raw.fracture_faces[k].vertices);
-              add_boundary(p.cut_faces[side],
-                           fracture_boundary_id(raw.fracture_faces[k].tag, Side(side)));
-            }
-          pending.push_back(p);
-        }
       build_log.add("cut", timer);
 
-      // --- The Triangulation.
+      SubCellData subcell;
       if constexpr (dim == 2)
-        subcell.boundary_lines = boundary_objects;
+        subcell.boundary_lines = cut.boundary_objects;
       else
-        subcell.boundary_quads = boundary_objects;
-      triangulation.create_triangulation(cut_vertices, cell_data<dim>(cut_cells, raw), subcell);
+        subcell.boundary_quads = cut.boundary_objects;
+      triangulation.create_triangulation(cut.vertices, cell_data<dim>(cut.cells, raw), subcell);
       simplex_mapping = std::make_unique<MappingFE<dim>>(FE_SimplexP<dim>(1));
       build_log.add("triangulation", timer);
 
@@ -378,25 +410,26 @@ namespace porofrac
       for (const unsigned int v : topology.fracture_vertices)
         {
           FractureNode<dim> node;
-          node.location     = V[v];
+          node.location     = raw.vertices[v];
           node.on_boundary  = topology.boundary_vertices.count(v) > 0;
-          node.copies       = copies_of_vertex[v];
+          node.copies       = cut.copies_of_vertex[v];
           node_of_vertex[v] = fracture_nodes.size();
           vertex_of_node.push_back(v);
           fracture_nodes.push_back(node);
         }
 
       // --- Fracture faces, sorted by fracture id and abscissa (3D: in gmsh's order).
-      std::stable_sort(pending.begin(), pending.end(), [&](const auto &a, const auto &b) {
+      std::stable_sort(cut.pending.begin(), cut.pending.end(), [&](const auto &a, const auto &b) {
         const unsigned int fa = raw.fracture_faces[a.raw_face].tag;
         const unsigned int fb = raw.fracture_faces[b.raw_face].tag;
-        return fa != fb ? fa < fb : s_begin[a.raw_face] < s_begin[b.raw_face];
+        return fa != fb ? fa < fb : cut.s_begin[a.raw_face] < cut.s_begin[b.raw_face];
       });
-      const auto cell_of = cells_by_index<dim>(triangulation, cut_cells);
-      for (const auto &p : pending)
+      const auto cell_of = cells_by_index<dim>(triangulation, cut.cells);
+      for (const auto &p : cut.pending)
         {
-          FractureFace<dim> face = geometric_face<dim>(p, raw, oriented, s_begin, node_of_vertex);
-          face.index             = fracture_faces.size();
+          FractureFace<dim> face =
+            geometric_face<dim>(p, raw, cut.oriented, cut.s_begin, node_of_vertex);
+          face.index = fracture_faces.size();
           for (unsigned int side = 0; side < 2; ++side)
             {
               face.cell[side]    = cell_of[p.cells[side]];
