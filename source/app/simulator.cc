@@ -16,9 +16,11 @@
 #include <porofrac/io/output_directory.h>
 #include <porofrac/io/output_parameters.h>
 #include <porofrac/io/run_context.h>
+#include <porofrac/io/text.h>
 
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 namespace porofrac
 {
@@ -26,6 +28,25 @@ namespace porofrac
   {
     namespace
     {
+      /// Axisymmetric scenes take the second coordinate as the radius r (Section 5.3): a domain
+      /// that reaches r < 0 has no meaning there. Generated domains are checked before meshing.
+      template <int dim, typename Points>
+      void
+      check_radius_non_negative(const Points &points, const std::string &parameter)
+      {
+        double r_min = std::numeric_limits<double>::max(), r_max = 0;
+        for (const auto &v : points)
+          {
+            r_min = std::min(r_min, v[1]);
+            r_max = std::max(r_max, std::abs(v[1]));
+          }
+        check_input(r_min >= -1e-12 * r_max,
+                    parameter,
+                    "the axisymmetric mode takes the second coordinate as the radius r, which "
+                    "must not be negative, but the domain reaches r = " +
+                      io::to_text(r_min) + " (move the domain to r >= 0)");
+      }
+
       /// Builds and reports the cut mesh, then runs the physics the deck asks for.
       template <int dim>
       void
@@ -37,12 +58,33 @@ namespace porofrac
         using namespace dealii;
         geometry::GeometryParameters geometry_parameters;
         geometry_parameters.parse_parameters(prm, deck.parent_path().string());
+        // Every physics parameter set the scene uses is parsed (and validated) once, here,
+        // before the mesh is made.
+        PhysicsParameters physics_parameters;
+        if (physics == "contact mechanics" || physics == "poromechanics")
+          physics_parameters.mechanics.parse_parameters(prm, dim);
+        if (physics == "two-phase flow" || physics == "poromechanics")
+          physics_parameters.flow.parse_parameters(prm);
+        if (physics == "poromechanics")
+          physics_parameters.coupling.parse_parameters(prm);
+        const std::string axisymmetric =
+          (physics_parameters.mechanics.axisymmetric && physics != "two-phase flow") ?
+            "Mechanics/Axisymmetric" :
+          (physics_parameters.flow.axisymmetric && physics != "contact mechanics") ?
+            "Flow/Axisymmetric" :
+            "";
+        if constexpr (dim == 2)
+          if (!axisymmetric.empty() && geometry_parameters.domain != "mesh file")
+            check_radius_non_negative<dim>(
+              geometry::network_from_parameters(geometry_parameters).domain.corners, axisymmetric);
         context.progress << "*** Building the cut mesh" << std::endl;
         std::unique_ptr<geometry::CutMesh<dim>> mesh;
         {
           TimerOutput::Scope t(context.timer, "Geometry: mesh generation and cut");
           mesh = geometry::make_cut_mesh<dim>(geometry_parameters);
         }
+        if (!axisymmetric.empty())
+          check_radius_non_negative<dim>(mesh->triangulation.get_vertices(), axisymmetric);
         report_mesh(*mesh, context);
         context.summary["n_cells"] = mesh->triangulation.n_active_cells();
         context.summary["n_fracture_faces"] =
@@ -54,14 +96,6 @@ namespace porofrac
           geometry::write_mesh(*mesh, context.path("mesh"), context.output_format);
         }
 
-        // Every physics parameter set the scene uses is parsed (and validated) once, here.
-        PhysicsParameters physics_parameters;
-        if (physics == "contact mechanics" || physics == "poromechanics")
-          physics_parameters.mechanics.parse_parameters(prm, dim);
-        if (physics == "two-phase flow" || physics == "poromechanics")
-          physics_parameters.flow.parse_parameters(prm);
-        if (physics == "poromechanics")
-          physics_parameters.coupling.parse_parameters(prm);
 
         if (physics == "contact mechanics")
           run_contact_mechanics_scene(physics_parameters, *mesh, context);
