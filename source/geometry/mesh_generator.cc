@@ -5,6 +5,7 @@
 #include <porofrac/geometry/gmsh_model.h>
 #include <porofrac/geometry/gmsh_session.h>
 #include <porofrac/geometry/mesh_generator.h>
+#include <porofrac/geometry/planar_graph_checks.h>
 #include <porofrac/geometry/polygon_mesher.h>
 #include <porofrac/geometry/size_guard.h>
 #include <porofrac/io/text.h>
@@ -78,7 +79,8 @@ namespace porofrac
     mesh_network(const FractureNetwork &network, const GeometryParameters &prm)
     {
       const PlanarGraph graph = network.planar_graph();
-      GmshSession       session;
+      check_near_degenerate(graph, 1e-3 * prm.fracture_mesh_size, 1., "Geometry/Fractures");
+      GmshSession session;
       gmsh::model::add("porofrac");
 
       std::vector<int> point_tags;
