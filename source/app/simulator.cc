@@ -58,6 +58,7 @@ namespace porofrac
         using namespace dealii;
         geometry::GeometryParameters geometry_parameters;
         geometry_parameters.parse_parameters(prm, deck.parent_path().string());
+        geometry_parameters.resolve_delaunay_flips(physics, dim);
         // Every physics parameter set the scene uses is parsed (and validated) once, here,
         // before the mesh is made.
         PhysicsParameters physics_parameters;

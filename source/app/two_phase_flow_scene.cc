@@ -154,7 +154,10 @@ namespace porofrac
                        << solver.n_unknowns() << " unknowns" << std::endl
                        << "Flow: " << grid.n_non_admissible
                        << " cell faces with the circumcentre on the wrong side, " << grid.n_fallback
-                       << " non-Delaunay connections (unsigned distances)" << std::endl;
+                       << (dim == 2 ? " connections of cocircular cells (centres merged)" :
+                                      " connections of cocircular cells or centres out of order "
+                                      "(merged or unsigned distances)")
+                       << std::endl;
         context.summary["n_unknowns_flow"] = solver.n_unknowns();
         totals.initial_volumes             = solver.phase_volumes(solver.state);
       }

@@ -6,6 +6,7 @@
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/flow/tpfa_grid.h>
+#include <porofrac/io/text.h>
 
 #include <cmath>
 #include <map>
@@ -86,6 +87,39 @@ namespace porofrac
       }
     } // namespace
 
+
+
+    template <int dim>
+    void
+    TpfaGrid<dim>::merge_or_refuse(double           &d_a,
+                                   double           &d_b,
+                                   const double      measure,
+                                   const Point<dim> &centre) const
+    {
+      // Two circumcentres that (nearly) coincide: the pair is cocircular, the exact two-point
+      // flux has T -> infinity; a distance of 1e-2 |sigma| keeps their pressures together.
+      if (d_a + d_b >= -1e-6 * measure)
+        {
+          d_a = d_b = 5e-3 * measure;
+          return;
+        }
+      // Circumcentres in the wrong order: the two-point flux (13) would have the wrong sign. In
+      // 2D, Delaunay flips remove these pairs (except across material interfaces): refuse.
+      if constexpr (dim == 2)
+        throw InputError("Geometry/Delaunay flips",
+                         "two-phase flow (TPFA) needs a Delaunay mesh, but the two cells at "
+                         "the face centred at " +
+                           io::to_text(centre) +
+                           " have their circumcentres in the wrong order; set Delaunay flips "
+                           "= auto or true (a material interface there is never flipped: "
+                           "refine the mesh at it)");
+      // 3D (no flips yet): unsigned distances, a consistent but not exact two-point flux.
+      d_a = std::max(std::abs(d_a), 5e-3 * measure);
+      d_b = std::max(std::abs(d_b), 5e-3 * measure);
+    }
+
+
+
     template <int dim>
     void
     TpfaGrid<dim>::make_nodes(const geometry::CutMesh<dim> &mesh, const bool axisymmetric)
@@ -159,13 +193,10 @@ namespace porofrac
                   if (K < L)
                     {
                       double d_a = d_K, d_b = (nodes[L].centre - centre) * normal;
-                      // Non-Delaunay pair (the two circumcentres in the wrong order): fall back
-                      // to unsigned distances, a consistent but not exact two-point flux.
                       if (d_a + d_b < 1e-2 * measure)
                         {
                           ++n_fallback;
-                          d_a = std::max(std::abs(d_a), 5e-3 * measure);
-                          d_b = std::max(std::abs(d_b), 5e-3 * measure);
+                          merge_or_refuse(d_a, d_b, measure, centre);
                         }
                       connections.push_back({ConnectionKind::matrix_matrix,
                                              K,

@@ -95,12 +95,15 @@ namespace porofrac
                         "takes many times more. Raise it on machines with the memory.");
       prm.declare_entry(
         "Delaunay flips",
-        "false",
-        Patterns::Bool(),
+        "auto",
+        Patterns::Selection("auto|true|false"),
         "Flip edges (never fracture, boundary or material-interface edges) after "
         "meshing and refinement until the mesh is Delaunay: TPFA with circumcentres "
-        "then has no connection of non-positive distance. Refined meshes are no "
-        "longer nested; keep false for convergence studies of the mechanics. 2D only.");
+        "then has no connection of non-positive distance (doc/algorithms.md). auto: "
+        "flips in 2D scenes with two-phase flow (two-phase flow, poromechanics), none "
+        "for contact mechanics, whose refined meshes stay nested for convergence "
+        "studies. 2D only (3D flow keeps unsigned distances where centres are out of "
+        "order, and reports them).");
       prm.declare_entry("Mesh algorithm",
                         "delaunay",
                         Patterns::Selection("delaunay|frontal-delaunay"),
@@ -140,11 +143,21 @@ namespace porofrac
       refinement_regions  = prm.get("Refinement regions");
       global_refinements  = prm.get_integer("Global refinements");
       maximum_cells       = prm.get_double("Maximum cells");
-      delaunay_flips      = prm.get_bool("Delaunay flips");
+      delaunay_flips_mode = prm.get("Delaunay flips");
+      delaunay_flips      = delaunay_flips_mode == "true";
       algorithm           = prm.get("Mesh algorithm");
       mesh_optimization   = prm.get_bool("Mesh optimization");
       random_discs.parse_parameters(prm);
       prm.leave_subsection();
+    }
+
+
+
+    void
+    GeometryParameters::resolve_delaunay_flips(const std::string &physics, const unsigned int dim)
+    {
+      if (delaunay_flips_mode == "auto")
+        delaunay_flips = dim == 2 && (physics == "two-phase flow" || physics == "poromechanics");
     }
   } // namespace geometry
 } // namespace porofrac

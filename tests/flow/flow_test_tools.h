@@ -32,7 +32,7 @@ namespace flow_test
     prm.fracture_mesh_size  = hf;
     prm.transition_distance = 0.1;
     prm.global_refinements  = 0;
-    prm.delaunay_flips      = false;
+    prm.delaunay_flips      = true; // TPFA needs ordered circumcentres (as Delaunay flips = auto)
     prm.algorithm           = algorithm;
     return geometry::make_cut_mesh<2>(prm);
   }

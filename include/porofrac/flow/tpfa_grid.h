@@ -129,9 +129,10 @@ namespace porofrac
       unsigned int            n_intersections;
       /// Number of matrix connections whose centre lies on the wrong side of the face.
       unsigned int n_non_admissible;
-      /// Matrix-matrix connections with d_K,e + d_L,e <= 0 (non-Delaunay pairs), where unsigned
-      /// distances are used instead; boundary and interface faces with d_K,e <= 0 use
-      /// max(d_K,e, 1e-3 diameter). Both lose the exactness of TPFA for linear fields.
+      /// Matrix-matrix connections with d_K,e + d_L,e < 1e-2 |sigma|: cocircular pairs (centres
+      /// merged, see merge_or_refuse) and, in 3D only, pairs with their centres in the wrong
+      /// order (unsigned distances, inexact). Boundary and interface faces with d_K,e <= 0 use
+      /// max(d_K,e, 1e-3 diameter).
       unsigned int n_fallback;
 
       /// Per-cell inputs: porosity and isotropic permeability (m^2) of matrix cells, aperture d_f
@@ -150,6 +151,14 @@ namespace porofrac
       add_matrix_connections(const geometry::CutMesh<dim>       &mesh,
                              const bool                          axisymmetric,
                              const std::set<types::boundary_id> &matrix_dirichlet_ids);
+      /// Distances of a matrix-matrix pair with d_a + d_b < 1e-2 |sigma| (@p measure): merged
+      /// centres for cocircular pairs; an InputError in 2D, unsigned distances in 3D, for
+      /// centres in the wrong order.
+      void
+      merge_or_refuse(double           &d_a,
+                      double           &d_b,
+                      const double      measure,
+                      const Point<dim> &centre) const;
       /// Interface-fracture connections (eq. (3)).
       void
       add_interface_connections(const geometry::CutMesh<dim> &mesh, const bool axisymmetric);

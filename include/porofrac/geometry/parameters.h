@@ -23,6 +23,10 @@ namespace porofrac
       /// Reads the subsection; @p deck_directory resolves relative mesh-file paths.
       void
       parse_parameters(ParameterHandler &prm, const std::string &deck_directory);
+      /// Resolves Delaunay flips = auto for a scene of @p physics in @p dim dimensions: TPFA
+      /// (Eq. (13)) needs ordered circumcentres, the mechanics' convergence studies nested meshes.
+      void
+      resolve_delaunay_flips(const std::string &physics, const unsigned int dim);
 
       std::string  domain = "box";           ///< box | polygon | mesh file
       std::string  box    = "(0, 0) (1, 1)"; ///< "(x0, y0) (x1, y1)" (3D: with z)
@@ -37,7 +41,9 @@ namespace porofrac
       std::string  refinement_regions;         ///< "(x0, y0) (x1, y1): h; ..."
       unsigned int global_refinements = 0;
       double       maximum_cells      = 5e6; ///< larger meshes are refused before they are made
-      bool delaunay_flips   = false; ///< restore the Delaunay property after meshing/refinement
+      /// "auto", "true" or "false"; auto = flips in 2D where two-phase flow runs on the mesh.
+      std::string delaunay_flips_mode = "auto";
+      bool delaunay_flips   = false; ///< resolved: restore the Delaunay property after refinement
       std::string algorithm = "delaunay";   ///< delaunay | frontal-delaunay
       bool        mesh_optimization = true; ///< 3D: gmsh's tetrahedron optimization after Delaunay
       RandomDiscParameters random_discs;    ///< 3D: the "Random discs" subsection
