@@ -10,6 +10,10 @@ if(INPUT)
 else()
   set(_command ${EXECUTABLE} ${EXTRA_ARGS})
 endif()
+if(MPI_PROCESSES GREATER 0)
+  # --oversubscribe: Open MPI refuses more processes than it counts free cores otherwise.
+  set(_command ${MPIEXEC} ${MPIEXEC_NUMPROC_FLAG} ${MPI_PROCESSES} --oversubscribe ${_command})
+endif()
 execute_process(COMMAND ${_command}
   WORKING_DIRECTORY ${WORKDIR}
   OUTPUT_VARIABLE _out ERROR_VARIABLE _err RESULT_VARIABLE _status)
