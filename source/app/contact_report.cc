@@ -81,6 +81,7 @@ namespace porofrac
       m["factorizations"]             = s.factorizations;
       m["reused_factorizations"]      = s.reused_factorizations;
       m["linear_iterations"]          = s.linear_iterations;
+      m["linear_direct_fallbacks"]    = s.direct_fallbacks;
       io::Json timing                 = io::Json::object();
       timing["contact_rows_s"]        = s.time_contact_rows;
       timing["factorization_s"]       = s.time_factorization;

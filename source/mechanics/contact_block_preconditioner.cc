@@ -10,9 +10,6 @@
 #include <algorithm>
 #include <map>
 
-#include <Amesos.h>
-#include <Amesos_BaseSolver.h>
-#include <Epetra_LinearProblem.h>
 #include <ml_MultiLevelPreconditioner.h>
 
 namespace porofrac
@@ -46,14 +43,6 @@ namespace porofrac
         std::copy(lambda.begin(), lambda.end(), std::copy(u.begin(), u.end(), x.begin()));
       }
 
-      void
-      check(const int status, const char *what)
-      {
-        if (status != 0)
-          throw SolverFailure(std::string("contact preconditioner: ") + what +
-                              " of the multiplier Schur complement failed (Amesos status " +
-                              std::to_string(status) + ")");
-      }
     } // namespace
 
 
@@ -62,6 +51,7 @@ namespace porofrac
     ContactBlockPreconditioner<dim>::ContactBlockPreconditioner(
       const DistributedElasticitySystem<dim> &system)
         : system(system)
+        , schur_lu("contact preconditioner (multiplier Schur complement)")
     {
       const MPI_Comm comm = system.get_communicator();
       const auto    &K    = system.get_constrained_matrix();
@@ -185,16 +175,7 @@ namespace porofrac
             }
         }
       schur.compress(VectorOperation::add);
-      if (!schur_solver)
-        {
-          schur_problem = std::make_unique<Epetra_LinearProblem>();
-          schur_problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&schur.trilinos_matrix()));
-          Amesos factory;
-          schur_solver.reset(factory.Create("Amesos_Mumps", *schur_problem));
-          check(schur_solver ? 0 : -1, "creation");
-          check(schur_solver->SymbolicFactorization(), "symbolic factorization");
-        }
-      check(schur_solver->NumericFactorization(), "factorization");
+      schur_lu.factorize(schur);
     }
 
 
@@ -204,9 +185,7 @@ namespace porofrac
     ContactBlockPreconditioner<dim>::vmult(VectorType &dst, const VectorType &src) const
     {
       split(src, r_u, r_lambda);
-      schur_problem->SetLHS(&y_lambda.trilinos_vector());
-      schur_problem->SetRHS(&r_lambda.trilinos_vector());
-      check(schur_solver->Solve(), "solve");
+      schur_lu.solve(y_lambda, r_lambda);
       system.get_free_coupling_transpose().vmult(y_u, y_lambda);
       r_u -= y_u;
       amg.vmult(y_u, r_u);

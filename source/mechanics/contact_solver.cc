@@ -436,6 +436,7 @@ namespace porofrac
       stats.factorizations                     = now.factorizations - start.factorizations;
       stats.reused_factorizations = now.reused_factorizations - start.reused_factorizations;
       stats.linear_iterations     = now.linear_iterations - start.linear_iterations;
+      stats.direct_fallbacks      = now.direct_fallbacks - start.direct_fallbacks;
       stats.time_factorization    = now.time_factorization - start.time_factorization;
       stats.time_solves           = now.time_solves - start.time_solves;
     }

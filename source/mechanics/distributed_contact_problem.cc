@@ -130,9 +130,8 @@ namespace porofrac
           }
       const auto     all = Utilities::MPI::gather(system.get_communicator(), mine, 0);
       Vector<double> result;
-      if (mesh.this_rank() != 0)
+      if (mesh.this_rank() != 0 || serial_dofs == nullptr)
         return result;
-      Assert(serial_dofs != nullptr, ExcInternalError());
       result.reinit(serial_dofs->n_dofs());
       std::vector<typename DoFHandler<dim>::active_cell_iterator> cells(
         serial_dofs->get_triangulation().n_active_cells());

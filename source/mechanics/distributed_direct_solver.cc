@@ -3,12 +3,9 @@
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/distributed_contact_linear_solver.h>
+#include <porofrac/mechanics/mumps_factorization.h>
 
 #include <memory>
-
-#include <Amesos.h>
-#include <Amesos_BaseSolver.h>
-#include <Epetra_LinearProblem.h>
 
 namespace porofrac
 {
@@ -30,6 +27,7 @@ namespace porofrac
         explicit DistributedDirectSolver(const DistributedElasticitySystem<dim> &system)
             : system(system)
             , jacobian(system)
+            , lu("contact mechanics")
         {
         }
 
@@ -42,9 +40,7 @@ namespace porofrac
           if (!factorized || !same_owned_rows(system, rows, factorized_rows))
             factorize(rows);
           Timer clock;
-          problem.SetLHS(&x.trilinos_vector());
-          problem.SetRHS(const_cast<Epetra_MultiVector *>(&rhs.trilinos_vector()));
-          check(solver->Solve(), "solve");
+          lu.solve(x, rhs);
           this->stats.time_solves += clock.wall_time();
         }
 
@@ -67,35 +63,16 @@ namespace porofrac
         {
           Timer clock;
           jacobian.assemble(rows);
-          if (!solver)
-            {
-              problem.SetOperator(
-                const_cast<Epetra_CrsMatrix *>(&jacobian.matrix().trilinos_matrix()));
-              Amesos factory;
-              solver.reset(factory.Create("Amesos_Mumps", problem));
-              if (!solver)
-                throw SolverFailure("contact mechanics: Amesos has no MUMPS");
-              check(solver->SymbolicFactorization(), "symbolic factorization");
-            }
-          check(solver->NumericFactorization(), "factorization");
+          lu.factorize(jacobian.matrix());
           factorized      = true;
           factorized_rows = rows;
           ++this->stats.factorizations;
           this->stats.time_factorization += clock.wall_time();
         }
 
-        static void
-        check(const int status, const char *what)
-        {
-          if (status != 0)
-            throw SolverFailure(std::string("contact mechanics: MUMPS ") + what +
-                                " failed (Amesos status " + std::to_string(status) + ")");
-        }
-
         const DistributedElasticitySystem<dim> &system;
         DistributedJacobian<dim>                jacobian;
-        Epetra_LinearProblem                    problem;
-        std::unique_ptr<Amesos_BaseSolver>      solver;
+        MumpsFactorization                      lu;
         bool                                    factorized = false;
         FaceRows<dim>                           factorized_rows;
       };

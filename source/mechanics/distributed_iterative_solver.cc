@@ -7,6 +7,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/contact_block_preconditioner.h>
 #include <porofrac/mechanics/distributed_contact_linear_solver.h>
+#include <porofrac/mechanics/mumps_factorization.h>
 
 #include <memory>
 
@@ -21,6 +22,11 @@ namespace porofrac
        * Jacobian with the ContactBlockPreconditioner, to the relative residual the contact
        * iterations ask for (inexact steps). The preconditioner is set up when the face rows
        * change; its AMG hierarchy and G once.
+       *
+       * Safeguard: where the diagonal approximation of the multiplier Schur complement fails
+       * (semi-smooth Newton rows with large lambda_n couplings, e.g. the second iterate from
+       * the open guess, doc/parallel.md), GMRES stagnates; after Max linear iterations the step
+       * is solved by MUMPS instead, and counted (statistics: direct fallbacks).
        */
       template <int dim>
       class DistributedIterativeSolver : public DistributedContactLinearSolver<dim>
@@ -30,10 +36,13 @@ namespace porofrac
 
         DistributedIterativeSolver(const DistributedElasticitySystem<dim> &system,
                                    const ContactParameters                &parameters,
+                                   ConditionalOStream                     &progress,
                                    TimerOutput                            &timer)
             : system(system)
             , max_iterations(parameters.max_linear_iterations)
             , jacobian(system)
+            , fallback("contact mechanics (direct fallback)")
+            , progress(progress)
         {
           TimerOutput::Scope t(timer, "Mechanics: AMG and multiplier block setup");
           preconditioner = std::make_unique<ContactBlockPreconditioner<dim>>(system);
@@ -71,11 +80,13 @@ namespace porofrac
             {
               gmres.solve(jacobian.matrix(), x, rhs, *preconditioner);
             }
-          catch (const SolverControl::NoConvergence &e)
+          catch (const SolverControl::NoConvergence &)
             {
-              throw SolverFailure("contact mechanics: GMRES did not reach the relative residual " +
-                                  std::to_string(tolerance) + " in " +
-                                  std::to_string(max_iterations) + " iterations");
+              progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
+                       << " iterations; MUMPS solves this step" << std::endl;
+              fallback.factorize(jacobian.matrix());
+              fallback.solve(x, rhs);
+              ++this->stats.direct_fallbacks;
             }
           this->stats.linear_iterations += control.last_step();
           this->stats.time_solves += clock.wall_time();
@@ -98,6 +109,8 @@ namespace porofrac
         const unsigned int                               max_iterations;
         double                                           tolerance = 1e-8;
         DistributedJacobian<dim>                         jacobian;
+        MumpsFactorization                               fallback;
+        ConditionalOStream                              &progress;
         std::unique_ptr<ContactBlockPreconditioner<dim>> preconditioner;
         bool                                             ready = false;
         FaceRows<dim>                                    current_rows;
@@ -108,16 +121,20 @@ namespace porofrac
         "block upper-triangular preconditioner (smoothed-aggregation AMG with the rigid-body "
         "modes on the elasticity block, the multiplier Schur complement approximated with "
         "diag(K), factorized by MUMPS; doc/parallel.md), to the relative residual "
-        "min(Linear solver tolerance, Linear solver forcing x the contact residual).";
+        "min(Linear solver tolerance, Linear solver forcing x the contact residual); a step "
+        "whose GMRES does not converge in Max linear iterations is solved by MUMPS.";
 
       template <int dim>
       std::unique_ptr<DistributedContactLinearSolver<dim>>
       make_iterative_solver(const DistributedElasticitySystem<dim> &system,
                             const ContactParameters                &parameters,
-                            ConditionalOStream &,
-                            TimerOutput &timer)
+                            ConditionalOStream                     &progress,
+                            TimerOutput                            &timer)
       {
-        return std::make_unique<DistributedIterativeSolver<dim>>(system, parameters, timer);
+        return std::make_unique<DistributedIterativeSolver<dim>>(system,
+                                                                 parameters,
+                                                                 progress,
+                                                                 timer);
       }
     } // namespace
 

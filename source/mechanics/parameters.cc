@@ -174,10 +174,11 @@ namespace porofrac
                         Patterns::Double(),
                         "Iterative linear solvers: see Linear solver tolerance.");
       prm.declare_entry("Max linear iterations",
-                        "1000",
+                        "200",
                         Patterns::Integer(1),
-                        "Iterative linear solvers: Krylov iterations per solve before the "
-                        "contact solve fails.");
+                        "Iterative linear solvers: Krylov iterations per solve before the step "
+                        "is solved by the direct solver instead (counted in summary.json, "
+                        "mechanics/linear_direct_fallbacks).");
       prm.declare_entry("Report linear solve time",
                         "false",
                         Patterns::Bool(),

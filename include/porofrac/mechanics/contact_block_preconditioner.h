@@ -8,12 +8,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <porofrac/mechanics/distributed_elasticity_system.h>
+#include <porofrac/mechanics/mumps_factorization.h>
 
 #include <memory>
 #include <vector>
-
-class Amesos_BaseSolver;
-class Epetra_LinearProblem;
 
 namespace porofrac
 {
@@ -63,8 +61,7 @@ namespace porofrac
       std::vector<double>                     modes;
       TrilinosWrappers::PreconditionAMG       amg;
       TrilinosWrappers::SparseMatrix          G, schur;
-      std::unique_ptr<Epetra_LinearProblem>   schur_problem;
-      std::unique_ptr<Amesos_BaseSolver>      schur_solver;
+      MumpsFactorization                      schur_lu;
       mutable VectorType                      r_u, r_lambda, y_u, y_lambda;
     };
   } // namespace mechanics

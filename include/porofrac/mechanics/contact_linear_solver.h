@@ -24,8 +24,9 @@ namespace porofrac
       unsigned int factorizations = 0;
       /// Solves done by GMRES preconditioned by older factors instead of a factorization.
       unsigned int reused_factorizations = 0;
-      /// Krylov iterations of iterative solvers.
+      /// Krylov iterations of iterative solvers, and their steps solved directly instead.
       unsigned int linear_iterations  = 0;
+      unsigned int direct_fallbacks   = 0;
       double       time_factorization = 0;
       double       time_solves        = 0;
       /// Set-up that depends on the mesh only (Cholesky of K and W for the Schur complement).

@@ -39,8 +39,9 @@ namespace porofrac
       unsigned int        cycles_detected = 0;
       /// Factorizations of this solve, and solves done by GMRES on older factors.
       unsigned int factorizations = 0, reused_factorizations = 0;
-      /// Krylov iterations of an iterative linear solver over this solve.
-      unsigned int linear_iterations = 0;
+      /// Krylov iterations of an iterative linear solver over this solve, and its steps solved
+      /// directly because GMRES did not converge.
+      unsigned int linear_iterations = 0, direct_fallbacks = 0;
       /// Time in computing the face rows, factorizing, triangular solves, and residual and
       /// line-search evaluations; set-up of the Schur complement (first solve only).
       double time_contact_rows = 0, time_factorization = 0, time_solves = 0, time_residuals = 0,

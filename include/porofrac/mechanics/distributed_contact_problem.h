@@ -95,7 +95,7 @@ namespace porofrac
       std::vector<ContactFaceValues<dim>>
       gather_face_values() const;
       /// u in the numbering of @p serial_dofs (the same FE on the serial cut mesh; given on
-      /// rank 0 only), on rank 0 (empty elsewhere). Collective.
+      /// rank 0 only), on rank 0 (empty elsewhere, and without @p serial_dofs). Collective.
       Vector<double>
       gather_displacement(const DoFHandler<dim> *serial_dofs) const;
       /// The multipliers of every face (dim per face, global frame), on rank 0. Collective.

@@ -121,8 +121,9 @@ namespace porofrac
       /// relative residual of the last contact iterate).
       double linear_tolerance = 1e-2;
       double linear_forcing   = 1e-1;
-      /// Iterative linear solvers: at most this many Krylov iterations per solve.
-      unsigned int max_linear_iterations = 1000;
+      /// Iterative linear solvers: at most this many Krylov iterations per solve (then the
+      /// step is solved directly).
+      unsigned int max_linear_iterations = 200;
 
       ContactReports reports;
     };
