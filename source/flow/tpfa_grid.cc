@@ -87,25 +87,10 @@ namespace porofrac
     } // namespace
 
     template <int dim>
-    TpfaGrid<dim>::TpfaGrid(const geometry::CutMesh<dim>       &mesh,
-                            const bool                          axisymmetric,
-                            const std::set<types::boundary_id> &matrix_dirichlet_ids,
-                            const std::set<types::boundary_id> &fracture_dirichlet_ids)
+    void
+    TpfaGrid<dim>::make_nodes(const geometry::CutMesh<dim> &mesh, const bool axisymmetric)
     {
-      check_input(dim == 2 || mesh.fracture_faces.empty(),
-                  "Physics",
-                  "two-phase flow in 3D is implemented for meshes without fractures only (the "
-                  "fracture-fracture connections through fracture edges are missing), and this "
-                  "mesh has " +
-                    std::to_string(mesh.fracture_faces.size()) + " fracture faces");
       const auto &tria = mesh.triangulation;
-      n_matrix_cells   = tria.n_active_cells();
-      n_fracture_cells = mesh.fracture_faces.size();
-      n_interfaces     = 2 * n_fracture_cells;
-      n_intersections  = 0;
-      n_non_admissible = 0;
-      n_fallback       = 0;
-
       nodes.resize(n_matrix_cells + n_fracture_cells + n_interfaces);
       for (const auto &cell : tria.active_cell_iterators())
         {
@@ -135,7 +120,17 @@ namespace porofrac
               inode.measure = 0;
             }
         }
+    }
 
+
+
+    template <int dim>
+    void
+    TpfaGrid<dim>::add_matrix_connections(const geometry::CutMesh<dim>       &mesh,
+                                          const bool                          axisymmetric,
+                                          const std::set<types::boundary_id> &matrix_dirichlet_ids)
+    {
+      const auto &tria = mesh.triangulation;
       // Matrix connections.
       for (const auto &cell : tria.active_cell_iterators())
         {
@@ -219,7 +214,15 @@ namespace porofrac
                 }
             }
         }
+    }
 
+
+
+    template <int dim>
+    void
+    TpfaGrid<dim>::add_interface_connections(const geometry::CutMesh<dim> &mesh,
+                                             const bool                    axisymmetric)
+    {
       // Interface-fracture connections (eq. (3); the interface carries rock type a = fracture).
       for (unsigned int s = 0; s < n_fracture_cells; ++s)
         for (unsigned int side = 0; side < 2; ++side)
@@ -232,65 +235,101 @@ namespace porofrac
              mesh.fracture_faces[s].measure * weight(axisymmetric, mesh.fracture_faces[s].centre),
              0.,
              0.});
+    }
 
+
+
+    template <int dim>
+    void
+    TpfaGrid<dim>::add_fracture_node_connections(
+      const geometry::CutMesh<dim>       &mesh,
+      const bool                          axisymmetric,
+      const std::set<types::boundary_id> &fracture_dirichlet_ids)
+    {
+      const auto                                &tria = mesh.triangulation;
+      std::map<unsigned int, types::boundary_id> vertex_boundary_id;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) &&
+              cell->face(f)->boundary_id() < geometry::first_fracture_boundary_id)
+            for (unsigned int v = 0; v < dim; ++v)
+              vertex_boundary_id[cell->face(f)->vertex_index(v)] = cell->face(f)->boundary_id();
+
+      for (const auto &fnode : mesh.fracture_nodes)
+        {
+          const unsigned int n_faces = fnode.faces.size();
+          const double       w       = weight(axisymmetric, fnode.location);
+          types::boundary_id id      = numbers::invalid_boundary_id;
+          if (fnode.on_boundary)
+            for (const unsigned int c : fnode.copies)
+              if (vertex_boundary_id.count(c))
+                id = vertex_boundary_id[c];
+          const bool dirichlet = fnode.on_boundary && fracture_dirichlet_ids.count(id);
+          if (dirichlet || n_faces >= 3)
+            {
+              Node node;
+              node.kind        = dirichlet ? NodeKind::dirichlet_fracture : NodeKind::intersection;
+              node.rock        = fracture_rock;
+              node.measure     = 0;
+              node.centre      = fnode.location;
+              node.boundary_id = id;
+              nodes.push_back(node);
+              if (!dirichlet)
+                ++n_intersections;
+              for (const unsigned int s : fnode.faces)
+                connections.push_back({ConnectionKind::fracture_node,
+                                       n_matrix_cells + s,
+                                       static_cast<unsigned int>(nodes.size() - 1),
+                                       fracture_rock,
+                                       fracture_rock,
+                                       w,
+                                       (mesh.fracture_faces[s].centre - fnode.location).norm(),
+                                       0.});
+            }
+          else if (n_faces == 2)
+            {
+              const unsigned int s0 = fnode.faces[0], s1 = fnode.faces[1];
+              connections.push_back({ConnectionKind::fracture_fracture,
+                                     n_matrix_cells + s0,
+                                     n_matrix_cells + s1,
+                                     fracture_rock,
+                                     fracture_rock,
+                                     w,
+                                     (mesh.fracture_faces[s0].centre - fnode.location).norm(),
+                                     (mesh.fracture_faces[s1].centre - fnode.location).norm()});
+            }
+          // one face: a tip, no flux
+        }
+    }
+
+
+
+    template <int dim>
+    TpfaGrid<dim>::TpfaGrid(const geometry::CutMesh<dim>       &mesh,
+                            const bool                          axisymmetric,
+                            const std::set<types::boundary_id> &matrix_dirichlet_ids,
+                            const std::set<types::boundary_id> &fracture_dirichlet_ids)
+    {
+      check_input(dim == 2 || mesh.fracture_faces.empty(),
+                  "Physics",
+                  "two-phase flow in 3D is implemented for meshes without fractures only (the "
+                  "fracture-fracture connections through fracture edges are missing), and this "
+                  "mesh has " +
+                    std::to_string(mesh.fracture_faces.size()) + " fracture faces");
+      const auto &tria = mesh.triangulation;
+      n_matrix_cells   = tria.n_active_cells();
+      n_fracture_cells = mesh.fracture_faces.size();
+      n_interfaces     = 2 * n_fracture_cells;
+      n_intersections  = 0;
+      n_non_admissible = 0;
+      n_fallback       = 0;
+
+      make_nodes(mesh, axisymmetric);
+      add_matrix_connections(mesh, axisymmetric, matrix_dirichlet_ids);
+      add_interface_connections(mesh, axisymmetric);
       // Fracture-fracture connections through fracture nodes (2D; 3D meshes have no fractures).
       if (dim == 2)
-        {
-          std::map<unsigned int, types::boundary_id> vertex_boundary_id;
-          for (const auto &cell : tria.active_cell_iterators())
-            for (const unsigned int f : cell->face_indices())
-              if (cell->at_boundary(f) &&
-                  cell->face(f)->boundary_id() < geometry::first_fracture_boundary_id)
-                for (unsigned int v = 0; v < dim; ++v)
-                  vertex_boundary_id[cell->face(f)->vertex_index(v)] = cell->face(f)->boundary_id();
-
-          for (const auto &fnode : mesh.fracture_nodes)
-            {
-              const unsigned int n_faces = fnode.faces.size();
-              const double       w       = weight(axisymmetric, fnode.location);
-              types::boundary_id id      = numbers::invalid_boundary_id;
-              if (fnode.on_boundary)
-                for (const unsigned int c : fnode.copies)
-                  if (vertex_boundary_id.count(c))
-                    id = vertex_boundary_id[c];
-              const bool dirichlet = fnode.on_boundary && fracture_dirichlet_ids.count(id);
-              if (dirichlet || n_faces >= 3)
-                {
-                  Node node;
-                  node.kind    = dirichlet ? NodeKind::dirichlet_fracture : NodeKind::intersection;
-                  node.rock    = fracture_rock;
-                  node.measure = 0;
-                  node.centre  = fnode.location;
-                  node.boundary_id = id;
-                  nodes.push_back(node);
-                  if (!dirichlet)
-                    ++n_intersections;
-                  for (const unsigned int s : fnode.faces)
-                    connections.push_back({ConnectionKind::fracture_node,
-                                           n_matrix_cells + s,
-                                           static_cast<unsigned int>(nodes.size() - 1),
-                                           fracture_rock,
-                                           fracture_rock,
-                                           w,
-                                           (mesh.fracture_faces[s].centre - fnode.location).norm(),
-                                           0.});
-                }
-              else if (n_faces == 2)
-                {
-                  const unsigned int s0 = fnode.faces[0], s1 = fnode.faces[1];
-                  connections.push_back({ConnectionKind::fracture_fracture,
-                                         n_matrix_cells + s0,
-                                         n_matrix_cells + s1,
-                                         fracture_rock,
-                                         fracture_rock,
-                                         w,
-                                         (mesh.fracture_faces[s0].centre - fnode.location).norm(),
-                                         (mesh.fracture_faces[s1].centre - fnode.location).norm()});
-                }
-              // one face: a tip, no flux
-            }
-        }
-
+        add_fracture_node_connections(mesh, axisymmetric, fracture_dirichlet_ids);
       porosity.assign(n_matrix_cells, 0.1);
       permeability.assign(n_matrix_cells, 1.);
       aperture.assign(n_fracture_cells, 1e-3);

@@ -406,6 +406,144 @@ namespace porofrac
     }
 
     template <int dim>
+    void
+    TwoPhaseSolver<dim>::report_largest_residual(const Vector<double> &residual,
+                                                 ConditionalOStream   &verbose) const
+    {
+      // Where the residual is largest: which node and phase hold Newton back.
+      unsigned int imax = 0, ph = 0;
+      double       rmax = 0;
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        for (unsigned int a = 0; a < 2; ++a)
+          if (dof(i, a) != numbers::invalid_unsigned_int && std::abs(residual(dof(i, a))) > rmax)
+            {
+              rmax = std::abs(residual(dof(i, a)));
+              imax = i;
+              ph   = a;
+            }
+      verbose << "        largest residual " << residual(dof(imax, ph)) << " (phase " << ph
+              << ") at node " << imax << " (kind " << static_cast<int>(grid.nodes[imax].kind)
+              << ", p_w = " << pressure(state, imax, 0)
+              << ", p_c = " << state[imax][1] - state[imax][0]
+              << ", old p_c = " << old_state[imax][1] - old_state[imax][0] << ")" << std::endl;
+    }
+
+
+
+    template <int dim>
+    bool
+    TwoPhaseSolver<dim>::solve_linear_system(const Vector<double> &residual,
+                                             Vector<double>       &update,
+                                             std::string          &failure)
+    {
+      std::unique_ptr<TimerOutput::Scope> t;
+      if (timer)
+        t = std::make_unique<TimerOutput::Scope>(*timer,
+                                                 "Flow: linear solve (" + linear_solver->name() +
+                                                   ")");
+      // A singular or failed factorisation is a failed step (converged = false), never an
+      // exception: the caller cuts the time step.
+      try
+        {
+          linear_solver->initialize(jacobian);
+          linear_solver->solve(residual, update, parameters.linear_tolerance);
+        }
+      catch (const SolverFailure &e)
+        {
+          failure = "linear solver failed (" + std::string(e.what()) + ")";
+          return false;
+        }
+      return true;
+    }
+
+
+
+    template <int dim>
+    double
+    TwoPhaseSolver<dim>::apply_update(const Vector<double> &update, ConditionalOStream &verbose)
+    {
+      double       p_max = 0, du_max = 0;
+      unsigned int argmax = 0, n_kink_crossings = 0, n_chopped = 0;
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (!grid.is_dirichlet(i))
+          {
+            const std::array<double, 2> dp     = {{-update(dof(i, 0)), -update(dof(i, 1))}};
+            const double                pc_old = state[i][1] - state[i][0];
+            const double                dpc    = limit_capillary_change(i, pc_old, dp[1] - dp[0]);
+            // Keep the update of the phase that fills most of the node's pores (the one whose
+            // pressure the fluxes determine best); the other follows from p_c.
+            const SaturationLaw &law         = *rocks[grid.nodes[i].rock].saturation;
+            const bool           nw_dominant = law.saturation(pc_old) > 0.5;
+            const double         dpw         = nw_dominant ? dp[1] - dpc : dp[0];
+            state[i][0] += dpw;
+            state[i][1] += dpw + dpc;
+            for (unsigned int phase = 0; phase < 2; ++phase)
+              p_max = std::max(p_max, std::abs(state[i][phase] + reference_pressure));
+            const double du = std::max(std::abs(dpw), std::abs(dpw + dpc));
+            if (du > du_max)
+              {
+                du_max = du;
+                argmax = i;
+              }
+            const double p_e = law.entry_pressure();
+            if ((pc_old > p_e) != (pc_old + dpc > p_e))
+              ++n_kink_crossings;
+            if (std::abs(dpc - (dp[1] - dp[0])) > 1e-12 * std::abs(dp[1] - dp[0]))
+              ++n_chopped;
+          }
+      static const char *kinds[] = {
+        "matrix", "fracture", "interface", "intersection", "dirichlet", "dirichlet"};
+      verbose << "        largest update at " << kinds[static_cast<int>(grid.nodes[argmax].kind)]
+              << " node " << argmax << " (p_c = " << state[argmax][1] - state[argmax][0]
+              << ", S = " << saturation(state, argmax, grid.nodes[argmax].rock) << "), "
+              << n_kink_crossings << " nodes crossed p_c = p_e, " << n_chopped << " chopped"
+              << std::endl;
+      return du_max / std::max(p_max, 1e-300);
+    }
+
+
+
+    template <int dim>
+    bool
+    TwoPhaseSolver<dim>::line_search(const State        &previous,
+                                     const double        r,
+                                     const double        dt,
+                                     ConditionalOStream &verbose)
+    {
+      // Backtracking: halve the (chopped) update while it increases |R|. This breaks the
+      // two-cycles that the unbounded slope of the van Genuchten-Mualem k_r^w at S^nw = 0
+      // causes at drying fronts; the projections of apply_update() commute with the damping
+      // (p_c >= 0 and |Delta S| bounds hold on the segment).
+      std::unique_ptr<TimerOutput::Scope> t;
+      if (timer)
+        t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: assembly");
+      const State    full      = state;
+      double         theta     = 1.;
+      bool           decreased = false;
+      Vector<double> trial;
+      for (unsigned int k = 0; k < parameters.line_search_steps; ++k)
+        {
+          assemble(state, old_state, dt, trial, nullptr);
+          if (trial.l2_norm() <= r)
+            {
+              decreased = true;
+              break;
+            }
+          theta *= 0.5;
+          for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+            for (unsigned int phase = 0; phase < 2; ++phase)
+              state[i][phase] = previous[i][phase] + theta * (full[i][phase] - previous[i][phase]);
+        }
+      // The relative update stays the undamped Newton update: a damped step is no sign of
+      // convergence.
+      if (theta < 1.)
+        verbose << "        line search: step " << theta << std::endl;
+      return decreased;
+    }
+
+
+
+    template <int dim>
     StepResult
     TwoPhaseSolver<dim>::solve_time_step(const double dt, ConditionalOStream &verbose)
     {
@@ -452,28 +590,8 @@ namespace porofrac
           result.mass_defect = mass_defect(state, old_state, dt);
           const bool mass_ok = result.mass_defect[0] < parameters.mass_tolerance &&
                                result.mass_defect[1] < parameters.mass_tolerance;
-          // Where the residual is largest: which node and phase hold Newton back.
           if (verbose.is_active())
-            {
-              unsigned int imax = 0, ph = 0;
-              double       rmax = 0;
-              for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-                for (unsigned int a = 0; a < 2; ++a)
-                  if (dof(i, a) != numbers::invalid_unsigned_int &&
-                      std::abs(residual(dof(i, a))) > rmax)
-                    {
-                      rmax = std::abs(residual(dof(i, a)));
-                      imax = i;
-                      ph   = a;
-                    }
-              verbose << "        largest residual " << residual(dof(imax, ph)) << " (phase " << ph
-                      << ") at node " << imax << " (kind "
-                      << static_cast<int>(grid.nodes[imax].kind)
-                      << ", p_w = " << pressure(state, imax, 0)
-                      << ", p_c = " << state[imax][1] - state[imax][0]
-                      << ", old p_c = " << old_state[imax][1] - old_state[imax][0] << ")"
-                      << std::endl;
-            }
+            report_largest_residual(residual, verbose);
           verbose << "      Newton " << it << ": |R| = " << std::scientific << std::setprecision(3)
                   << r << ", update " << last_update << ", mass defect "
                   << std::max(result.mass_defect[0], result.mass_defect[1]) << std::defaultfloat
@@ -513,119 +631,31 @@ namespace porofrac
               result.failure = msg.str();
               break;
             }
-          {
-            std::unique_ptr<TimerOutput::Scope> t;
-            if (timer)
-              t = std::make_unique<TimerOutput::Scope>(*timer,
-                                                       "Flow: linear solve (" +
-                                                         linear_solver->name() + ")");
-            // A singular or failed factorisation is a failed step (converged = false), never
-            // an exception: the caller cuts the time step.
-            try
-              {
-                linear_solver->initialize(jacobian);
-                linear_solver->solve(residual, update, parameters.linear_tolerance);
-              }
-            catch (const SolverFailure &e)
-              {
-                result.failure = "linear solver failed (" + std::string(e.what()) + ")";
-                return result;
-              }
-          }
-          const State  previous = parameters.line_search ? state : State();
-          double       p_max = 0, du_max = 0;
-          unsigned int argmax = 0, n_kink_crossings = 0, n_chopped = 0;
-          for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-            if (!grid.is_dirichlet(i))
-              {
-                const std::array<double, 2> dp     = {{-update(dof(i, 0)), -update(dof(i, 1))}};
-                const double                pc_old = state[i][1] - state[i][0];
-                const double                dpc = limit_capillary_change(i, pc_old, dp[1] - dp[0]);
-                // Keep the update of the phase that fills most of the node's pores (the one
-                // whose pressure the fluxes determine best); the other follows from p_c.
-                const SaturationLaw &law         = *rocks[grid.nodes[i].rock].saturation;
-                const bool           nw_dominant = law.saturation(pc_old) > 0.5;
-                const double         dpw         = nw_dominant ? dp[1] - dpc : dp[0];
-                state[i][0] += dpw;
-                state[i][1] += dpw + dpc;
-                for (unsigned int phase = 0; phase < 2; ++phase)
-                  p_max = std::max(p_max, std::abs(state[i][phase] + reference_pressure));
-                const double du = std::max(std::abs(dpw), std::abs(dpw + dpc));
-                if (du > du_max)
-                  {
-                    du_max = du;
-                    argmax = i;
-                  }
-                const double p_e = law.entry_pressure();
-                if ((pc_old > p_e) != (pc_old + dpc > p_e))
-                  ++n_kink_crossings;
-                if (std::abs(dpc - (dp[1] - dp[0])) > 1e-12 * std::abs(dp[1] - dp[0]))
-                  ++n_chopped;
-              }
+          if (!solve_linear_system(residual, update, result.failure))
+            return result;
+          const State  previous        = parameters.line_search ? state : State();
           const double previous_update = last_update;
-          last_update                  = du_max / std::max(p_max, 1e-300);
-          {
-            static const char *kinds[] = {
-              "matrix", "fracture", "interface", "intersection", "dirichlet", "dirichlet"};
-            const double pc = state[argmax][1] - state[argmax][0];
-            verbose << "        largest update at "
-                    << kinds[static_cast<int>(grid.nodes[argmax].kind)] << " node " << argmax
-                    << " (p_c = " << pc
-                    << ", S = " << saturation(state, argmax, grid.nodes[argmax].rock) << "), "
-                    << n_kink_crossings << " nodes crossed p_c = p_e, " << n_chopped << " chopped"
-                    << std::endl;
-          }
+          last_update                  = apply_update(update, verbose);
           if (!std::isfinite(last_update))
             {
               result.failure = "non-finite update";
               return result;
             }
-          // Backtracking: halve the (chopped) update while it increases |R|. This breaks the
-          // two-cycles that the unbounded slope of the van Genuchten-Mualem k_r^w at S^nw = 0
-          // causes at drying fronts; the projections above commute with the damping (p_c >= 0
-          // and |Delta S| bounds hold on the segment).
-          if (parameters.line_search)
+          if (parameters.line_search && !line_search(previous, r, dt, verbose) &&
+              stagnation_fallback_holds(mass, previous_update))
             {
-              std::unique_ptr<TimerOutput::Scope> t;
-              if (timer)
-                t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: assembly");
-              const State    full      = state;
-              double         theta     = 1.;
-              bool           decreased = false;
-              Vector<double> trial;
-              for (unsigned int k = 0; k < parameters.line_search_steps; ++k)
-                {
-                  assemble(state, old_state, dt, trial, nullptr);
-                  if (trial.l2_norm() <= r)
-                    {
-                      decreased = true;
-                      break;
-                    }
-                  theta *= 0.5;
-                  for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-                    for (unsigned int phase = 0; phase < 2; ++phase)
-                      state[i][phase] =
-                        previous[i][phase] + theta * (full[i][phase] - previous[i][phase]);
-                }
-              // last_update stays the undamped Newton update: a damped step is no sign of
-              // convergence.
-              if (theta < 1.)
-                verbose << "        line search: step " << theta << std::endl;
               // No damping of the Newton direction lowers |R|: the iterate sits on a kink (of
-              // S, of k_r or of the upwinding) and further iterations cycle around it. If the
-              // state before the step already meets the stagnation fallback (mass defect and
-              // the update that led to it), it is the answer; otherwise iterate on, and the
-              // stagnation counter decides.
-              if (!decreased && stagnation_fallback_holds(mass, previous_update))
-                {
-                  state = previous;
-                  verbose << "      Newton: no descent along the Newton direction within the "
-                             "fallback update tolerance, accepted"
-                          << std::endl;
-                  result.converged  = true;
-                  result.iterations = it + 1;
-                  return result;
-                }
+              // S, of k_r or of the upwinding) and further iterations cycle around it. The
+              // state before the step meets the stagnation fallback (mass defect and the update
+              // that led to it): it is the answer. Otherwise iterate on, and the stagnation
+              // counter decides.
+              state = previous;
+              verbose << "      Newton: no descent along the Newton direction within the "
+                         "fallback update tolerance, accepted"
+                      << std::endl;
+              result.converged  = true;
+              result.iterations = it + 1;
+              return result;
             }
           result.iterations = it + 1;
         }

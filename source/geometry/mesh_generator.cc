@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/timer.h>
+
 #include <porofrac/base/exceptions.h>
+#include <porofrac/geometry/gmsh_model.h>
+#include <porofrac/geometry/gmsh_session.h>
 #include <porofrac/geometry/mesh_generator.h>
+#include <porofrac/geometry/polygon_mesher.h>
 #include <porofrac/io/text.h>
 
 #include <cmath>
@@ -18,129 +23,6 @@ namespace porofrac
   namespace geometry
   {
     using io::trim;
-    namespace
-    {
-      /// Initializes gmsh for the lifetime of the object, quietly.
-      struct GmshSession
-      {
-        GmshSession()
-        {
-          gmsh::initialize(0, nullptr, false);
-          gmsh::option::setNumber("General.Terminal", 0);
-          gmsh::option::setNumber("General.Verbosity", 1);
-        }
-        ~GmshSession()
-        {
-          gmsh::finalize();
-        }
-      };
-
-      /// Reads the current gmsh model's mesh into a RawMesh (see read_gmsh_file for the rules).
-      template <int dim>
-      RawMesh<dim>
-      extract_mesh(const std::string &parameter)
-      {
-        const int cell_type = (dim == 2) ? 2 : 4; // 3-node triangle, 4-node tetrahedron
-        const int face_type = (dim == 2) ? 1 : 2; // 2-node line, 3-node triangle
-
-        RawMesh<dim>             raw;
-        std::vector<std::size_t> node_tags;
-        std::vector<double>      coords, parametric;
-        gmsh::model::mesh::getNodes(node_tags, coords, parametric, -1, -1, true, false);
-        std::map<std::size_t, unsigned int> index_of_tag;
-        // gmsh node tags need not be contiguous: map them to our vertex indices on first use.
-        std::map<std::size_t, std::size_t> position;
-        for (std::size_t i = 0; i < node_tags.size(); ++i)
-          position[node_tags[i]] = i;
-        auto vertex = [&](const std::size_t tag) {
-          const auto it = index_of_tag.find(tag);
-          if (it != index_of_tag.end())
-            return it->second;
-          const std::size_t pos = position.at(tag);
-          Point<dim>        p;
-          for (unsigned int d = 0; d < dim; ++d)
-            p[d] = coords[3 * pos + d];
-          raw.vertices.push_back(p);
-          return index_of_tag[tag] = raw.vertices.size() - 1;
-        };
-
-        // Material ids from full-dimensional physical groups (0 without any).
-        std::map<int, types::material_id> material_of_entity;
-        gmsh::vectorpair                  groups;
-        gmsh::model::getPhysicalGroups(groups, dim);
-        for (const auto &[d, tag] : groups)
-          {
-            std::vector<int> entities;
-            gmsh::model::getEntitiesForPhysicalGroup(d, tag, entities);
-            for (const int e : entities)
-              material_of_entity[e] = tag;
-          }
-        gmsh::vectorpair entities;
-        gmsh::model::getEntities(entities, dim);
-        for (const auto &[d, entity] : entities)
-          {
-            std::vector<std::size_t> element_tags, element_nodes;
-            gmsh::model::mesh::getElementsByType(cell_type, element_tags, element_nodes, entity);
-            const auto material = material_of_entity.count(entity) ? material_of_entity[entity] : 0;
-            for (std::size_t e = 0; e < element_tags.size(); ++e)
-              {
-                std::array<unsigned int, dim + 1> cell;
-                for (unsigned int i = 0; i < dim + 1; ++i)
-                  cell[i] = vertex(element_nodes[(dim + 1) * e + i]);
-                raw.cells.push_back(cell);
-                raw.cell_material.push_back(material);
-              }
-          }
-        POROFRAC_CHECK_INPUT(!raw.cells.empty(),
-                             InputError(parameter,
-                                        std::string("the mesh has no ") +
-                                          (dim == 2 ? "triangles" : "tetrahedra")));
-
-        // Codimension-one physical groups: fractures and boundary parts.
-        groups.clear();
-        gmsh::model::getPhysicalGroups(groups, dim - 1);
-        for (const auto &[d, tag] : groups)
-          {
-            std::string name;
-            gmsh::model::getPhysicalName(d, tag, name);
-            std::smatch match;
-            const bool  is_fracture =
-              std::regex_match(name, match, std::regex("\\s*fracture[ _:]*([0-9]+)\\s*"));
-            std::vector<int> group_entities;
-            gmsh::model::getEntitiesForPhysicalGroup(d, tag, group_entities);
-            for (const int entity : group_entities)
-              {
-                std::vector<std::size_t> element_tags, element_nodes;
-                gmsh::model::mesh::getElementsByType(face_type,
-                                                     element_tags,
-                                                     element_nodes,
-                                                     entity);
-                for (std::size_t e = 0; e < element_tags.size(); ++e)
-                  {
-                    typename RawMesh<dim>::TaggedFace face;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      face.vertices[i] = vertex(element_nodes[dim * e + i]);
-                    if (is_fracture)
-                      {
-                        face.tag = std::stoul(match[1]);
-                        raw.fracture_faces.push_back(face);
-                      }
-                    else
-                      {
-                        POROFRAC_CHECK_INPUT(tag >= 0 && tag < 1000,
-                                             InputError(parameter,
-                                                        "physical group " + std::to_string(tag) +
-                                                          " ('" + name +
-                                                          "'): boundary ids must be in [0, 999]"));
-                        face.tag = tag;
-                        raw.boundary_faces.push_back(face);
-                      }
-                  }
-              }
-          }
-        return raw;
-      }
-    } // namespace
 
 
 
@@ -254,77 +136,13 @@ namespace porofrac
                                                 5 * prm.mesh_size);
           fields.push_back(threshold);
         }
-      {
-        std::stringstream regions(prm.refinement_regions);
-        std::string       item;
-        while (std::getline(regions, item, ';'))
-          {
-            item = trim(item);
-            if (item.empty())
-              continue;
-            const auto colon = item.rfind(':');
-            check_input(colon != std::string::npos,
-                        "Geometry/Refinement regions",
-                        "write each region as '(x0, y0) (x1, y1): h'");
-            const auto corners =
-              FractureNetwork::parse_points(item.substr(0, colon), "Geometry/Refinement regions");
-            check_input(corners.size() == 2,
-                        "Geometry/Refinement regions",
-                        "each region needs two corners");
-            double h = 0;
-            try
-              {
-                h = std::stod(item.substr(colon + 1));
-              }
-            catch (...)
-              {
-              }
-            check_input(h > 0,
-                        "Geometry/Refinement regions",
-                        "cell size '" + trim(item.substr(colon + 1)) +
-                          "' must be a positive number");
-            const int box = gmsh::model::mesh::field::add("Box");
-            gmsh::model::mesh::field::setNumber(box, "VIn", h);
-            gmsh::model::mesh::field::setNumber(box, "VOut", prm.mesh_size);
-            gmsh::model::mesh::field::setNumber(box,
-                                                "XMin",
-                                                std::min(corners[0][0], corners[1][0]));
-            gmsh::model::mesh::field::setNumber(box,
-                                                "XMax",
-                                                std::max(corners[0][0], corners[1][0]));
-            gmsh::model::mesh::field::setNumber(box,
-                                                "YMin",
-                                                std::min(corners[0][1], corners[1][1]));
-            gmsh::model::mesh::field::setNumber(box,
-                                                "YMax",
-                                                std::max(corners[0][1], corners[1][1]));
-            fields.push_back(box);
-          }
-      }
-      if (!prm.size_expression.empty())
-        {
-          const int expression = gmsh::model::mesh::field::add("MathEval");
-          gmsh::model::mesh::field::setString(expression, "F", prm.size_expression);
-          fields.push_back(expression);
-        }
-      {
-        const int          constant = gmsh::model::mesh::field::add("MathEval");
-        std::ostringstream h;
-        h.precision(17);
-        h << prm.mesh_size;
-        gmsh::model::mesh::field::setString(constant, "F", h.str());
-        fields.push_back(constant);
-      }
-      const int minimum = gmsh::model::mesh::field::add("Min");
-      gmsh::model::mesh::field::setNumbers(minimum, "FieldsList", fields);
-      gmsh::model::mesh::field::setAsBackgroundMesh(minimum);
-      gmsh::option::setNumber("Mesh.CharacteristicLengthExtendFromBoundary", 0);
-      gmsh::option::setNumber("Mesh.CharacteristicLengthFromPoints", 0);
-      gmsh::option::setNumber("Mesh.CharacteristicLengthFromCurvature", 0);
+      set_background_size(prm, 2, fields);
       gmsh::option::setNumber("Mesh.Algorithm", prm.algorithm == "delaunay" ? 5 : 6);
-      gmsh::model::mesh::generate(2);
+      session.run("Geometry", "gmsh could not mesh the domain", [] {
+        gmsh::model::mesh::generate(2);
+      });
 
-      RawMesh<2> raw = extract_mesh<2>("Geometry");
+      RawMesh<2> raw = extract_gmsh_mesh<2>("Geometry");
       for (const auto &f : network.fractures)
         raw.fracture_start[f.id] = f.points.front();
       return raw;
@@ -347,19 +165,15 @@ namespace porofrac
                   parameter,
                   "mesh file '" + filename + "' must end in .geo or .msh");
       GmshSession session;
-      try
-        {
-          gmsh::open(filename);
-          if (is_geo)
-            gmsh::model::mesh::generate(dim);
-        }
-      catch (...)
-        {
-          throw InputError(parameter,
-                           "gmsh could not read '" +
-                             std::filesystem::path(filename).filename().string() + "'");
-        }
-      return extract_mesh<dim>(parameter);
+      session.run(parameter,
+                  "gmsh could not read '" + std::filesystem::path(filename).filename().string() +
+                    "'",
+                  [&] {
+                    gmsh::open(filename);
+                    if (is_geo)
+                      gmsh::model::mesh::generate(dim);
+                  });
+      return extract_gmsh_mesh<dim>(parameter);
     }
 
 
@@ -368,6 +182,8 @@ namespace porofrac
     std::unique_ptr<CutMesh<dim>>
     make_cut_mesh(const GeometryParameters &prm)
     {
+      Timer        timer;
+      MeshBuildLog log;
       RawMesh<dim> raw;
       check_input(prm.domain == "mesh file" || prm.mesh_size > 0,
                   "Geometry/Mesh size",
@@ -375,21 +191,30 @@ namespace porofrac
       check_input(prm.domain == "mesh file" || prm.fracture_mesh_size > 0,
                   "Geometry/Fracture mesh size",
                   "must be positive");
+      check_input(dim == 2 || !prm.delaunay_flips,
+                  "Geometry/Delaunay flips",
+                  "Delaunay flips are implemented in 2D only");
+      check_input(dim == 3 || prm.random_discs.count == 0,
+                  "Geometry/Random discs/Count",
+                  "random discs are 3D fractures");
       if (prm.domain == "mesh file")
         raw = read_gmsh_file<dim>(prm.mesh_file, "Geometry/Mesh file");
+      else if constexpr (dim == 2)
+        raw = mesh_network(network_from_parameters(prm), prm);
       else
-        {
-          if constexpr (dim == 2)
-            raw = mesh_network(network_from_parameters(prm), prm);
-          else
-            throw InputError("Geometry/Domain",
-                             "3D domains must be given as a gmsh mesh file (Domain = mesh file)");
-        }
+        raw = mesh_polygon_network(polygon_network_from_parameters(prm, &log.random_discs), prm);
+      log.add("gmsh", timer);
       for (unsigned int r = 0; r < prm.global_refinements; ++r)
         raw.refine_uniformly();
       if (prm.delaunay_flips)
         raw.make_delaunay();
-      return std::make_unique<CutMesh<dim>>(raw);
+      log.add("refinement", timer);
+      auto mesh = std::make_unique<CutMesh<dim>>(raw);
+      mesh->build_log.phases.insert(mesh->build_log.phases.begin(),
+                                    log.phases.begin(),
+                                    log.phases.end());
+      mesh->build_log.random_discs = log.random_discs;
+      return mesh;
     }
 
 

@@ -15,6 +15,85 @@ namespace porofrac
 {
   namespace geometry
   {
+    namespace
+    {
+      /**
+       * Writes unconnected simplices (@p n_corners consecutive @p points each, VTK cell type
+       * @p vtk_type) with per-cell @p fields to @p filename as "vtk" (legacy) or "vtu" (XML),
+       * both ASCII.
+       */
+      template <int dim>
+      void
+      write_simplices(const std::string             &filename,
+                      const std::string             &format,
+                      const std::vector<Point<dim>> &points,
+                      const unsigned int             n_corners,
+                      const int                      vtk_type,
+                      const FractureFields          &fields)
+      {
+        std::ofstream out(filename);
+        check_input(bool(out), "Output/Directory", "cannot write '" + filename + "'");
+        out << std::setprecision(17);
+        const std::size_t n_cells      = points.size() / n_corners;
+        auto              write_points = [&](const char *sep) {
+          for (const auto &p : points)
+            out << p[0] << ' ' << p[1] << ' ' << (dim == 3 ? p[dim - 1] : 0.) << sep;
+        };
+        if (format == "vtk")
+          {
+            out << "# vtk DataFile Version 3.0\nPoroFrac fracture faces\nASCII\n"
+                << "DATASET UNSTRUCTURED_GRID\nPOINTS " << points.size() << " double\n";
+            write_points("\n");
+            out << "CELLS " << n_cells << ' ' << (n_corners + 1) * n_cells << '\n';
+            for (std::size_t i = 0; i < n_cells; ++i)
+              {
+                out << n_corners;
+                for (unsigned int k = 0; k < n_corners; ++k)
+                  out << ' ' << n_corners * i + k;
+                out << '\n';
+              }
+            out << "CELL_TYPES " << n_cells << '\n';
+            for (std::size_t i = 0; i < n_cells; ++i)
+              out << vtk_type << '\n';
+            out << "CELL_DATA " << n_cells << '\n';
+            for (const auto &[name, values] : fields)
+              {
+                out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
+                for (const double v : values)
+                  out << v << '\n';
+              }
+            return;
+          }
+        out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+            << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
+            << "\" NumberOfCells=\"" << n_cells
+            << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+            << "format=\"ascii\">\n";
+        write_points("\n");
+        out << "</DataArray>\n</Points>\n<Cells>\n"
+            << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+        for (std::size_t i = 0; i < points.size(); ++i)
+          out << i << ' ';
+        out << "\n</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
+        for (std::size_t i = 0; i < n_cells; ++i)
+          out << n_corners * (i + 1) << ' ';
+        out << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+        for (std::size_t i = 0; i < n_cells; ++i)
+          out << vtk_type << ' ';
+        out << "\n</DataArray>\n</Cells>\n<CellData>\n";
+        for (const auto &[name, values] : fields)
+          {
+            out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+            for (const double v : values)
+              out << v << ' ';
+            out << "\n</DataArray>\n";
+          }
+        out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     write_fracture_cells(const CutMesh<dim>   &mesh,
@@ -22,20 +101,20 @@ namespace porofrac
                          const std::string    &format,
                          const FractureFields &extra)
     {
-      std::ofstream out(filename);
-      check_input(bool(out), "Output/Directory", "cannot write '" + filename + "'");
-      out << std::setprecision(17);
-      const auto    &faces  = mesh.fracture_faces;
-      FractureFields fields = {{"fracture_id", {}},
-                               {"face_id", {}},
-                               {"abscissa", {}},
-                               {"distance_to_tip", {}}};
+      const auto             &faces  = mesh.fracture_faces;
+      FractureFields          fields = {{"fracture_id", {}},
+                                        {"face_id", {}},
+                                        {"abscissa", {}},
+                                        {"distance_to_tip", {}}};
+      std::vector<Point<dim>> points;
       for (const auto &f : faces)
         {
           fields[0].second.push_back(f.fracture_id);
           fields[1].second.push_back(f.index);
           fields[2].second.push_back(f.abscissa);
           fields[3].second.push_back(std::isfinite(f.distance_to_tip) ? f.distance_to_tip : -1.);
+          for (const unsigned int n : f.nodes)
+            points.push_back(mesh.fracture_nodes[n].location);
         }
       for (const auto &e : extra)
         {
@@ -43,66 +122,33 @@ namespace porofrac
                       ExcMessage("fracture field '" + e.first + "' has the wrong size"));
           fields.push_back(e);
         }
-      const unsigned int n_points = dim * faces.size();
-      // Points: the dim vertices of each face (faces are written unconnected).
-      auto write_points = [&](const char *sep) {
-        for (const auto &f : faces)
-          for (const unsigned int n : f.nodes)
-            {
-              const auto &p = mesh.fracture_nodes[n].location;
-              out << p[0] << ' ' << p[1] << ' ' << (dim == 3 ? p[dim - 1] : 0.) << sep;
-            }
-      };
-      const int vtk_type = (dim == 2) ? 3 : 5; // VTK_LINE, VTK_TRIANGLE
-      if (format == "vtk")
+      // VTK_LINE, VTK_TRIANGLE; faces are written unconnected.
+      write_simplices<dim>(filename, format, points, dim, (dim == 2) ? 3 : 5, fields);
+    }
+
+
+
+    template <int dim>
+    void
+    write_fracture_edges(const CutMesh<dim> &mesh,
+                         const std::string  &filename,
+                         const std::string  &format)
+    {
+      FractureFields          fields = {{"edge_type", {}},
+                                        {"n_faces", {}},
+                                        {"fracture_id_min", {}},
+                                        {"fracture_id_max", {}}};
+      std::vector<Point<dim>> points;
+      for (const auto &e : mesh.fracture_edges)
         {
-          out << "# vtk DataFile Version 3.0\nPoroFrac fracture faces\nASCII\n"
-              << "DATASET UNSTRUCTURED_GRID\nPOINTS " << n_points << " double\n";
-          write_points("\n");
-          out << "CELLS " << faces.size() << ' ' << (dim + 1) * faces.size() << '\n';
-          for (unsigned int i = 0; i < faces.size(); ++i)
-            {
-              out << dim;
-              for (unsigned int k = 0; k < dim; ++k)
-                out << ' ' << dim * i + k;
-              out << '\n';
-            }
-          out << "CELL_TYPES " << faces.size() << '\n';
-          for (unsigned int i = 0; i < faces.size(); ++i)
-            out << vtk_type << '\n';
-          out << "CELL_DATA " << faces.size() << '\n';
-          for (const auto &[name, values] : fields)
-            {
-              out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
-              for (const double v : values)
-                out << v << '\n';
-            }
-          return;
+          fields[0].second.push_back(static_cast<int>(e.type));
+          fields[1].second.push_back(e.faces.size());
+          fields[2].second.push_back(e.fracture_ids.front());
+          fields[3].second.push_back(e.fracture_ids.back());
+          for (const unsigned int n : e.nodes)
+            points.push_back(mesh.fracture_nodes[n].location);
         }
-      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\""
-          << faces.size() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-          << "format=\"ascii\">\n";
-      write_points("\n");
-      out << "</DataArray>\n</Points>\n<Cells>\n"
-          << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
-      for (unsigned int i = 0; i < n_points; ++i)
-        out << i << ' ';
-      out << "\n</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
-      for (unsigned int i = 0; i < faces.size(); ++i)
-        out << dim * (i + 1) << ' ';
-      out << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-      for (unsigned int i = 0; i < faces.size(); ++i)
-        out << vtk_type << ' ';
-      out << "\n</DataArray>\n</Cells>\n<CellData>\n";
-      for (const auto &[name, values] : fields)
-        {
-          out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-          for (const double v : values)
-            out << v << ' ';
-          out << "\n</DataArray>\n";
-        }
-      out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+      write_simplices<dim>(filename, format, points, 2, 3, fields);
     }
 
 
@@ -174,6 +220,8 @@ namespace porofrac
                         format,
                         {{"material_id", material}, {"circumcentre_inside", centre_inside}});
       write_fracture_cells(mesh, basename + "_fractures." + format, format);
+      if (dim == 3)
+        write_fracture_edges(mesh, basename + "_fracture_edges." + format, format);
     }
 
 
@@ -188,6 +236,10 @@ namespace porofrac
                             const std::string &,
                             const std::string &,
                             const FractureFields &);
+    template void
+    write_fracture_edges<2>(const CutMesh<2> &, const std::string &, const std::string &);
+    template void
+    write_fracture_edges<3>(const CutMesh<3> &, const std::string &, const std::string &);
     template void
     write_cell_fields<2>(const CutMesh<2> &,
                          const std::string &,

@@ -2,6 +2,7 @@
 #include <porofrac/geometry/mesh_quality.h>
 #include <porofrac/geometry/simplex_tools.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace porofrac
@@ -42,6 +43,43 @@ namespace porofrac
           n *= -1;
         return n;
       }
+
+      template <int dim>
+      double
+      face_diameter(const typename Triangulation<dim>::active_cell_iterator &cell,
+                    const unsigned int                                       f)
+      {
+        double     d    = 0;
+        const auto face = cell->face(f);
+        for (unsigned int i = 0; i < face->n_vertices(); ++i)
+          for (unsigned int j = i + 1; j < face->n_vertices(); ++j)
+            d = std::max(d, face->vertex(i).distance(face->vertex(j)));
+        return d;
+      }
+
+      /// Smallest and largest dihedral angle (degrees) of a tetrahedron, at its six edges.
+      std::pair<double, double>
+      dihedral_angles(const std::array<Point<3>, 4> &p)
+      {
+        std::array<Tensor<1, 3>, 4> n; // outward normal of the face opposite vertex i
+        for (unsigned int i = 0; i < 4; ++i)
+          {
+            const Point<3> &a = p[(i + 1) % 4], &b = p[(i + 2) % 4], &c = p[(i + 3) % 4];
+            n[i] = cross_product_3d(b - a, c - a);
+            n[i] /= n[i].norm();
+            if ((p[i] - a) * n[i] > 0)
+              n[i] *= -1;
+          }
+        double lo = 180, hi = 0;
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = i + 1; j < 4; ++j)
+            {
+              const double angle = 180 - std::acos(std::clamp(n[i] * n[j], -1., 1.)) * 180 / M_PI;
+              lo                 = std::min(lo, angle);
+              hi                 = std::max(hi, angle);
+            }
+        return {lo, hi};
+      }
     } // namespace
 
 
@@ -69,6 +107,8 @@ namespace porofrac
       q.n_vertices        = tria.n_used_vertices();
       q.n_fracture_faces  = mesh.fracture_faces.size();
       q.min_angle_degrees = 180;
+      if (dim == 3)
+        q.min_dihedral_degrees = 180;
       for (const auto &cell : tria.active_cell_iterators())
         {
           const auto p = corners<dim>(cell);
@@ -84,6 +124,12 @@ namespace porofrac
                     q.min_angle_degrees = std::min(q.min_angle_degrees, angle);
                     q.max_angle_degrees = std::max(q.max_angle_degrees, angle);
                   }
+          if constexpr (dim == 3)
+            {
+              const auto [lo, hi]    = dihedral_angles(p);
+              q.min_dihedral_degrees = std::min(q.min_dihedral_degrees, lo);
+              q.max_dihedral_degrees = std::max(q.max_dihedral_degrees, hi);
+            }
           const Point<dim> &xK = centres[cell->active_cell_index()];
           if (!contains<dim>(p, xK, 1e-10))
             ++q.n_centres_outside;
@@ -104,7 +150,10 @@ namespace porofrac
               const double         along = d * n;
               if (along <= 0)
                 ++q.n_non_positive_distance;
-              else if ((d - along * n).norm() > 1e-8 * d.norm())
+              // Relative to the face too: nearly cospherical neighbours have nearly equal
+              // circumcentres, whose round-off would otherwise count as a deviation.
+              else if ((d - along * n).norm() >
+                       1e-8 * std::max(d.norm(), face_diameter<dim>(cell, f)))
                 ++q.n_non_orthogonal;
             }
         }

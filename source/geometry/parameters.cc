@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/geometry/parameters.h>
+#include <porofrac/geometry/random_discs.h>
 
 namespace porofrac
 {
@@ -13,12 +14,13 @@ namespace porofrac
                         "box",
                         Patterns::Selection("box|polygon|mesh file"),
                         "Kind of domain: an axis-aligned box (boundary ids 0: x min, 1: x max, "
-                        "2: y min, 3: y max), a polygon, or a gmsh mesh file.");
+                        "2: y min, 3: y max, and in 3D 4: z min, 5: z max), a polygon (2D), or a "
+                        "gmsh mesh file.");
       prm.declare_entry("Box",
                         "(0, 0) (1, 1)",
                         Patterns::Anything(),
-                        "Lower-left and upper-right corners of the box domain, in m: "
-                        "'(x0, y0) (x1, y1)'.");
+                        "Lower and upper corners of the box domain, in m: '(x0, y0) (x1, y1)', "
+                        "in 3D '(x0, y0, z0) (x1, y1, z1)'.");
       prm.declare_entry("Polygon",
                         "",
                         Patterns::Anything(),
@@ -32,9 +34,18 @@ namespace porofrac
       prm.declare_entry("Fractures",
                         "",
                         Patterns::Anything(),
-                        "Fractures as polylines with ids, in m: 'id: (x, y) (x, y) ...; id: ...'. "
-                        "Fractures may cross or meet (X, T, L), may end on the outer boundary, "
-                        "and must not overlap or leave the domain.");
+                        "Fractures with ids, in m, separated by ';'. 2D: polylines "
+                        "'id: (x, y) (x, y) ...'; they may cross or meet (X, T, L), may end on "
+                        "the outer boundary, and must not overlap or leave the domain. 3D: planar "
+                        "polygons 'id: (x, y, z) (x, y, z) (x, y, z) ...' (n+ by the right-hand "
+                        "rule of the corner order, t1 along the first edge), discs 'id: disc "
+                        "centre (x, y, z) normal (x, y, z) radius r [sides n]' or with 'axes "
+                        "(x, y, z) (x, y, z)' (n+ = axis 1 x axis 2, t1 = axis 1) instead of the "
+                        "normal, and ellipses 'id: ellipse centre (x, y, z) axes (x, y, z) "
+                        "(x, y, z) radii a b [sides n]' (16 sides by default); they may cross, "
+                        "end on each other, touch or cut the boundary (the part outside is "
+                        "dropped), and must be planar, simple, not in a boundary face, and not "
+                        "overlap another fracture in its plane.");
       prm.declare_entry("Mesh file",
                         "",
                         Patterns::Anything(),
@@ -48,8 +59,9 @@ namespace porofrac
       prm.declare_entry("Fracture mesh size",
                         "0.02",
                         Patterns::Double(0),
-                        "Fracture face length, in m: each straight fracture segment gets "
-                        "round(length / size) faces (at least one).");
+                        "Fracture face size, in m. 2D: each straight fracture segment gets "
+                        "round(length / size) faces (at least one). 3D: the target edge length "
+                        "of the fracture triangles.");
       prm.declare_entry("Transition distance",
                         "0",
                         Patterns::Double(0),
@@ -64,12 +76,15 @@ namespace porofrac
       prm.declare_entry("Refinement regions",
                         "",
                         Patterns::Anything(),
-                        "Boxes with their own cell size: '(x0, y0) (x1, y1): h; ...', in m.");
+                        "Boxes with their own cell size: '(x0, y0) (x1, y1): h; ...', in 3D "
+                        "'(x0, y0, z0) (x1, y1, z1): h; ...', in m.");
       prm.declare_entry("Global refinements",
                         "0",
                         Patterns::Integer(0, 8),
-                        "Uniform refinements of the generated mesh (each splits every triangle "
-                        "into four and every fracture face into two).");
+                        "Uniform refinements of the generated mesh before the cut. 2D: each "
+                        "splits every triangle into four and every fracture face into two. 3D: "
+                        "Bey's red refinement, every tetrahedron into eight and every fracture "
+                        "face into four (nested meshes, fracture faces stay paired).");
       prm.declare_entry(
         "Delaunay flips",
         "false",
@@ -77,11 +92,22 @@ namespace porofrac
         "Flip edges (never fracture, boundary or material-interface edges) after "
         "meshing and refinement until the mesh is Delaunay: TPFA with circumcentres "
         "then has no connection of non-positive distance. Refined meshes are no "
-        "longer nested; keep false for convergence studies of the mechanics.");
+        "longer nested; keep false for convergence studies of the mechanics. 2D only.");
       prm.declare_entry("Mesh algorithm",
                         "delaunay",
                         Patterns::Selection("delaunay|frontal-delaunay"),
-                        "gmsh 2D meshing algorithm; Delaunay meshes suit TPFA best.");
+                        "gmsh 2D meshing algorithm (in 3D for the boundary and fracture "
+                        "surfaces; the volume is always meshed by gmsh's Delaunay algorithm); "
+                        "Delaunay meshes suit TPFA best.");
+      prm.declare_entry("Mesh optimization",
+                        "true",
+                        Patterns::Bool(),
+                        "3D: let gmsh optimize the tetrahedra after its Delaunay meshing (edge "
+                        "swaps and node moves by quality). It removes the slivers (dihedral "
+                        "angles near 0 and 180 degrees) that Delaunay meshes have, at the price of "
+                        "some connections that are no longer Delaunay (TPFA with circumcentres "
+                        "then has non-positive distances); doc/geometry.md has the numbers.");
+      RandomDiscParameters::declare_parameters(prm);
       prm.leave_subsection();
     }
 
@@ -107,6 +133,8 @@ namespace porofrac
       global_refinements  = prm.get_integer("Global refinements");
       delaunay_flips      = prm.get_bool("Delaunay flips");
       algorithm           = prm.get("Mesh algorithm");
+      mesh_optimization   = prm.get_bool("Mesh optimization");
+      random_discs.parse_parameters(prm);
       prm.leave_subsection();
     }
   } // namespace geometry

@@ -6,8 +6,10 @@
 #include <porofrac/geometry/simplex_tools.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 namespace porofrac
 {
@@ -40,61 +42,90 @@ namespace porofrac
     void
     RawMesh<dim>::refine_uniformly()
     {
-      AssertThrow(dim == 2,
-                  ExcMessage("Uniform refinement of cut meshes is implemented in 2D only; "
-                             "refine 3D meshes in gmsh before reading them."));
       // One new vertex per edge, shared by the cells and tagged faces that contain the edge.
-      std::map<std::pair<unsigned int, unsigned int>, unsigned int> midpoint;
+      std::unordered_map<std::uint64_t, unsigned int> midpoint;
+      midpoint.reserve(2 * vertices.size());
       auto mid = [&](unsigned int a, unsigned int b) {
         if (a > b)
           std::swap(a, b);
-        const auto it = midpoint.find({a, b});
+        const std::uint64_t key = (std::uint64_t(a) << 32) | b;
+        const auto          it  = midpoint.find(key);
         if (it != midpoint.end())
           return it->second;
         const unsigned int index = vertices.size();
         Point<dim>         p     = vertices[a];
         p += vertices[b];
         vertices.push_back(0.5 * p);
-        midpoint[{a, b}] = index;
+        midpoint.emplace(key, index);
         return index;
       };
 
-      if constexpr (dim == 2)
+      std::vector<std::array<unsigned int, dim + 1>> new_cells;
+      std::vector<types::material_id>                new_material;
+      const unsigned int                             n_children = (dim == 2) ? 4 : 8;
+      new_cells.reserve(n_children * cells.size());
+      new_material.reserve(n_children * cells.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
         {
-          std::vector<std::array<unsigned int, dim + 1>> new_cells;
-          std::vector<types::material_id>                new_material;
-          new_cells.reserve(4 * cells.size());
-          for (unsigned int c = 0; c < cells.size(); ++c)
+          const auto &t = cells[c];
+          if constexpr (dim == 2)
             {
-              const auto &t   = cells[c];
-              const auto  m01 = mid(t[0], t[1]);
-              const auto  m12 = mid(t[1], t[2]);
-              const auto  m20 = mid(t[2], t[0]);
+              const auto m01 = mid(t[0], t[1]);
+              const auto m12 = mid(t[1], t[2]);
+              const auto m20 = mid(t[2], t[0]);
               // Red refinement keeps the orientation of the parent in all four children.
               new_cells.push_back({{t[0], m01, m20}});
               new_cells.push_back({{m01, t[1], m12}});
               new_cells.push_back({{m20, m12, t[2]}});
               new_cells.push_back({{m01, m12, m20}});
-              for (unsigned int k = 0; k < 4; ++k)
-                new_material.push_back(cell_material.empty() ? 0 : cell_material[c]);
             }
-          cells         = std::move(new_cells);
-          cell_material = std::move(new_material);
-
-          auto split = [&](std::vector<TaggedFace> &faces) {
-            std::vector<TaggedFace> result;
-            result.reserve(2 * faces.size());
-            for (const auto &f : faces)
-              {
-                const unsigned int m = mid(f.vertices[0], f.vertices[1]);
-                result.push_back({{{f.vertices[0], m}}, f.tag});
-                result.push_back({{{m, f.vertices[1]}}, f.tag});
-              }
-            faces = std::move(result);
-          };
-          split(boundary_faces);
-          split(fracture_faces);
+          else
+            {
+              const auto m01 = mid(t[0], t[1]), m02 = mid(t[0], t[2]), m03 = mid(t[0], t[3]);
+              const auto m12 = mid(t[1], t[2]), m13 = mid(t[1], t[3]), m23 = mid(t[2], t[3]);
+              // Bey's children, in Bey's vertex order (the inner octahedron split along
+              // m02-m13): repeated refinement then makes at most three similarity classes.
+              new_cells.push_back({{t[0], m01, m02, m03}});
+              new_cells.push_back({{m01, t[1], m12, m13}});
+              new_cells.push_back({{m02, m12, t[2], m23}});
+              new_cells.push_back({{m03, m13, m23, t[3]}});
+              new_cells.push_back({{m01, m02, m03, m13}});
+              new_cells.push_back({{m01, m02, m12, m13}});
+              new_cells.push_back({{m02, m03, m13, m23}});
+              new_cells.push_back({{m02, m12, m13, m23}});
+            }
+          for (unsigned int k = 0; k < n_children; ++k)
+            new_material.push_back(cell_material.empty() ? 0 : cell_material[c]);
         }
+      cells         = std::move(new_cells);
+      cell_material = std::move(new_material);
+
+      // Tagged faces split like the faces of the cells: edges in two (2D), triangles in four.
+      auto split = [&](std::vector<TaggedFace> &faces) {
+        std::vector<TaggedFace> result;
+        result.reserve((dim == 2 ? 2 : 4) * faces.size());
+        for (const auto &f : faces)
+          {
+            const auto &v = f.vertices;
+            if constexpr (dim == 2)
+              {
+                const unsigned int m = mid(v[0], v[1]);
+                result.push_back({{{v[0], m}}, f.tag});
+                result.push_back({{{m, v[1]}}, f.tag});
+              }
+            else
+              {
+                const auto m01 = mid(v[0], v[1]), m12 = mid(v[1], v[2]), m20 = mid(v[2], v[0]);
+                result.push_back({{{v[0], m01, m20}}, f.tag});
+                result.push_back({{{m01, v[1], m12}}, f.tag});
+                result.push_back({{{m20, m12, v[2]}}, f.tag});
+                result.push_back({{{m01, m12, m20}}, f.tag});
+              }
+          }
+        faces = std::move(result);
+      };
+      split(boundary_faces);
+      split(fracture_faces);
     }
 
 

@@ -140,6 +140,25 @@ namespace porofrac
       std::vector<double> permeability;
       std::vector<double> aperture;
       double              normal_transmissibility = 1.;
+
+    private:
+      /// Matrix cells (circumcentres), fracture cells and the two interface nodes per face.
+      void
+      make_nodes(const geometry::CutMesh<dim> &mesh, const bool axisymmetric);
+      /// Matrix-matrix, matrix-interface and matrix-Dirichlet connections.
+      void
+      add_matrix_connections(const geometry::CutMesh<dim>       &mesh,
+                             const bool                          axisymmetric,
+                             const std::set<types::boundary_id> &matrix_dirichlet_ids);
+      /// Interface-fracture connections (eq. (3)).
+      void
+      add_interface_connections(const geometry::CutMesh<dim> &mesh, const bool axisymmetric);
+      /// Fracture-fracture connections through the fracture nodes, intersection and Dirichlet
+      /// nodes (2D).
+      void
+      add_fracture_node_connections(const geometry::CutMesh<dim>       &mesh,
+                                    const bool                          axisymmetric,
+                                    const std::set<types::boundary_id> &fracture_dirichlet_ids);
     };
   } // namespace flow
 } // namespace porofrac

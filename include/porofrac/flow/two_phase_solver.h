@@ -206,6 +206,25 @@ namespace porofrac
       /// chop (NewtonParameters).
       double
       limit_capillary_change(const unsigned int i, const double pc_old, double dpc) const;
+      /// Verbose: the node and phase of the largest residual entry.
+      void
+      report_largest_residual(const Vector<double> &residual, ConditionalOStream &verbose) const;
+      /// update = J^{-1} residual; false (and why) when the linear solver fails.
+      bool
+      solve_linear_system(const Vector<double> &residual,
+                          Vector<double>       &update,
+                          std::string          &failure);
+      /// Applies the Newton update (capillary and saturation chops, the dominant phase's
+      /// pressure kept); returns the relative update max |dp| / max |p|.
+      double
+      apply_update(const Vector<double> &update, ConditionalOStream &verbose);
+      /// Backtracking from @p previous along the applied update while |R| > @p r; whether a
+      /// step lowered |R|.
+      bool
+      line_search(const State        &previous,
+                  const double        r,
+                  const double        dt,
+                  ConditionalOStream &verbose);
       /// dS/dp_c of @p rock's law in the Jacobian: S'(p_e+) for p_c <= p_e where the entry slope
       /// or the capillary bound is on, else the exact S'(p_c).
       double

@@ -8,6 +8,7 @@
 #include <deal.II/fe/mapping_fe.h>
 #include <deal.II/grid/tria.h>
 
+#include <porofrac/geometry/mesh_build_log.h>
 #include <porofrac/geometry/raw_mesh.h>
 
 #include <array>
@@ -53,11 +54,15 @@ namespace porofrac
       /// The bulk cells on the plus and minus sides, and the local face numbers there.
       std::array<typename Triangulation<dim>::active_cell_iterator, 2> cell;
       std::array<unsigned int, 2>                                      face_no;
-      /// Unit normal n+ (outward from the plus side), constant on the face.
+      /// Unit normal n+ (outward from the plus side), constant on the face. 3D fractures from a
+      /// deck: the right-hand rule of the polygon's corner order (discs: the given normal).
       Tensor<1, dim> normal;
       /// 2D: unit tangent in the direction of increasing abscissa (n+ = its left normal rotated
-      /// so that normal = (-t_y, t_x)). 3D: a unit vector in the face plane.
+      /// so that normal = (-t_y, t_x)). 3D: t1 of the fracture's frame (t1, t2, n+), the same
+      /// on every face of a planar fracture: the polygon's first edge or the disc's first axis.
       Tensor<1, dim> tangent;
+      /// 3D: t2 = n+ x t1 (zero in 2D).
+      Tensor<1, dim> tangent2;
       /// |sigma| (length in 2D, area in 3D) and centre of mass.
       double     measure;
       Point<dim> centre;
@@ -66,8 +71,10 @@ namespace porofrac
       double abscissa;
       double abscissa_begin;
       double abscissa_end;
-      /// Euclidean distance from the centre to the nearest tip of the same fracture (a corner,
-      /// an intersection or a point on the outer boundary is not a tip); +infinity if none.
+      /// Euclidean distance from the centre to the nearest tip of the same fracture (2D: a
+      /// corner, an intersection or a point on the outer boundary is not a tip; 3D: the nearest
+      /// tip edge, an edge on the outer boundary or on another fracture is not one); +infinity
+      /// if none.
       double distance_to_tip;
       /// Uncut vertices of the face as indices into CutMesh::fracture_nodes (2D: in abscissa
       /// order).
@@ -98,6 +105,31 @@ namespace porofrac
       std::vector<unsigned int> copies;
     };
 
+    /// What a fracture edge is (3D).
+    enum class EdgeType
+    {
+      tip,          ///< a fracture ends inside the domain (one face)
+      intersection, ///< fractures meet: X, T and L lines (faces of two or more fractures)
+      boundary      ///< a fracture meets the outer boundary
+    };
+
+    /**
+     * A mesh edge of the fracture surfaces (3D) that is not inside a single fracture. The
+     * intersection edges are where the flow's intersection unknowns live.
+     */
+    template <int dim>
+    struct FractureEdge
+    {
+      EdgeType type;
+      /// End points as indices into CutMesh::fracture_nodes.
+      std::array<unsigned int, 2> nodes;
+      /// Fracture faces having this edge, and their distinct fracture ids (increasing).
+      std::vector<unsigned int> faces;
+      std::vector<unsigned int> fracture_ids;
+      double                    length;
+      Point<dim>                centre;
+    };
+
     /**
      * A Triangulation cut along the fractures, with the fracture-face table and the fracture
      * nodes. Fracture faces are boundary faces of the Triangulation; both sides of a face carry
@@ -113,6 +145,8 @@ namespace porofrac
       Triangulation<dim>             triangulation;
       std::vector<FractureFace<dim>> fracture_faces;
       std::vector<FractureNode<dim>> fracture_nodes;
+      /// 3D: tip, intersection and boundary edges of the fractures (empty in 2D).
+      std::vector<FractureEdge<dim>> fracture_edges;
       /// Fracture ids in increasing order, and the faces of each (ordered by abscissa).
       std::vector<unsigned int>                         fracture_ids;
       std::map<unsigned int, std::vector<unsigned int>> faces_of_fracture;
@@ -120,6 +154,15 @@ namespace porofrac
       std::vector<types::boundary_id> outer_boundary_ids;
       /// Number of vertices before cutting.
       unsigned int n_uncut_vertices;
+      /**
+       * Fracture faces the cut would have left joined because all their vertices lie on tips (a
+       * face spanning a corner of a fracture): each was split at its centre, with its two cells,
+       * before the cut.
+       */
+      unsigned int n_split_fracture_faces = 0;
+      /// Timings and peak memory of the phases that built the mesh (make_cut_mesh adds the
+      /// meshing and refinement before the cut).
+      MeshBuildLog build_log;
 
       /// Linear simplex mapping to use with FE_SimplexP on this mesh.
       const Mapping<dim> &
@@ -137,7 +180,7 @@ namespace porofrac
                     const unsigned int                                       face_no) const;
 
       /// Fracture nodes where three or more fracture faces meet, or where a fracture meets the
-      /// outer boundary (the special nodes the flow needs).
+      /// outer boundary (the special nodes the flow needs in 2D; in 3D see fracture_edges).
       std::vector<unsigned int>
       special_nodes() const;
 

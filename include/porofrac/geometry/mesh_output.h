@@ -39,6 +39,16 @@ namespace porofrac
                          const std::string    &format,
                          const FractureFields &fields = {});
 
+    /**
+     * Writes the fracture edges (3D) as line cells to @p filename with edge_type (0 tip,
+     * 1 intersection, 2 boundary), n_faces and the smallest and largest fracture id meeting there.
+     */
+    template <int dim>
+    void
+    write_fracture_edges(const CutMesh<dim> &mesh,
+                         const std::string  &filename,
+                         const std::string  &format);
+
     /// Named per-cell values (indexed by active cell index).
     using CellFields = std::vector<std::pair<std::string, Vector<double>>>;
 
@@ -51,7 +61,8 @@ namespace porofrac
                       const CellFields   &fields);
 
     /// Writes the cut mesh (material id and circumcentre-inside flag per cell) to
-    /// @p basename.vtu/.vtk and its fracture faces to @p basename_fractures.vtu/.vtk.
+    /// @p basename.vtu/.vtk, its fracture faces to @p basename_fractures.vtu/.vtk and, in 3D,
+    /// its fracture edges to @p basename_fracture_edges.vtu/.vtk.
     template <int dim>
     void
     write_mesh(const CutMesh<dim> &mesh, const std::string &basename, const std::string &format);

@@ -21,7 +21,10 @@ namespace porofrac
       unsigned int n_fracture_faces  = 0;
       double       min_angle_degrees = 0;
       double       max_angle_degrees = 0;
-      unsigned int n_connections     = 0;
+      /// 3D: smallest and largest dihedral angle between two faces of a tetrahedron.
+      double       min_dihedral_degrees = 0;
+      double       max_dihedral_degrees = 0;
+      unsigned int n_connections        = 0;
       /// Connections whose centre segment deviates from the face normal by more than 1e-8 rad.
       unsigned int n_non_orthogonal = 0;
       /// Connections with (x_L - x_K) . n_KL <= 0 (non-Delaunay pairs).

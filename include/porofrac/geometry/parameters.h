@@ -4,6 +4,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <porofrac/geometry/random_discs.h>
+
 #include <string>
 
 namespace porofrac
@@ -22,12 +24,12 @@ namespace porofrac
       void
       parse_parameters(ParameterHandler &prm, const std::string &deck_directory);
 
-      std::string  domain = "box";             ///< box | polygon | mesh file
-      std::string  box    = "(0, 0) (1, 1)";   ///< "(x0, y0) (x1, y1)"
-      std::string  polygon;                    ///< "(x, y) (x, y) ..." counter-clockwise
-      std::string  polygon_ids;                ///< one boundary id per polygon edge, or empty
-      std::string  fractures;                  ///< "id: (x, y) (x, y) ...; id: ..."
-      std::string  mesh_file;                  ///< .geo or .msh (domain = mesh file), resolved path
+      std::string  domain = "box";           ///< box | polygon | mesh file
+      std::string  box    = "(0, 0) (1, 1)"; ///< "(x0, y0) (x1, y1)" (3D: with z)
+      std::string  polygon;                  ///< "(x, y) (x, y) ..." counter-clockwise
+      std::string  polygon_ids;              ///< one boundary id per polygon edge, or empty
+      std::string  fractures; ///< "id: (x, y) (x, y) ...; id: ..." (3D: polygons, discs)
+      std::string  mesh_file; ///< .geo or .msh (domain = mesh file), resolved path
       double       mesh_size           = 0.1;  ///< far from fractures (m)
       double       fracture_mesh_size  = 0.02; ///< along fractures (m)
       double       transition_distance = 0.;   ///< distance over which the size grows (m)
@@ -35,7 +37,9 @@ namespace porofrac
       std::string  refinement_regions;         ///< "(x0, y0) (x1, y1): h; ..."
       unsigned int global_refinements = 0;
       bool delaunay_flips   = false; ///< restore the Delaunay property after meshing/refinement
-      std::string algorithm = "delaunay"; ///< delaunay | frontal-delaunay
+      std::string algorithm = "delaunay";   ///< delaunay | frontal-delaunay
+      bool        mesh_optimization = true; ///< 3D: gmsh's tetrahedron optimization after Delaunay
+      RandomDiscParameters random_discs;    ///< 3D: the "Random discs" subsection
     };
   } // namespace geometry
 } // namespace porofrac

@@ -3,6 +3,7 @@
 #define POROFRAC_GEOMETRY_RAW_MESH_H
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
 #include <array>
@@ -42,12 +43,21 @@ namespace porofrac
        * curvilinear abscissa starts there and n+ is the left normal of the direction of travel.
        */
       std::map<unsigned int, Point<dim>> fracture_start;
+      /**
+       * Optional orientation hints per fracture id (3D): n+ (the right-hand rule of the polygon's
+       * corners) and the first tangent t1 of the fracture's frame.
+       */
+      std::map<unsigned int, Tensor<1, dim>> fracture_normal, fracture_tangent;
 
       /// Makes every cell positively oriented (counter-clockwise in 2D).
       void
       orient_cells();
 
-      /// Red refinement: each triangle into four (2D). Tags and hints are kept.
+      /**
+       * Red refinement: each triangle into four (2D); each tetrahedron into eight by Bey's rule,
+       * and each tagged triangle into four (3D). Tags and hints are kept; cells keep the
+       * orientation of their parent in 2D (Bey's children do not, orient_cells() fixes that).
+       */
       void
       refine_uniformly();
 

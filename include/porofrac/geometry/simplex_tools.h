@@ -59,6 +59,46 @@ namespace porofrac
       return face;
     }
 
+    /// Unit normal of a face given by its dim vertices (2D: the left normal of the edge
+    /// v0 -> v1; 3D: the right-hand rule of v0, v1, v2).
+    template <int dim>
+    Tensor<1, dim>
+    face_normal(const std::vector<Point<dim>> &v, const std::array<unsigned int, dim> &f)
+    {
+      Tensor<1, dim> n;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, 2> t = v[f[1]] - v[f[0]];
+          n[0]                 = -t[1];
+          n[1]                 = t[0];
+        }
+      else
+        n = cross_product_3d(v[f[1]] - v[f[0]], v[f[2]] - v[f[0]]);
+      return n / n.norm();
+    }
+
+    /// Centre of mass of a face given by its dim vertices.
+    template <int dim>
+    Point<dim>
+    face_centre(const std::vector<Point<dim>> &v, const std::array<unsigned int, dim> &f)
+    {
+      Point<dim> c;
+      for (const unsigned int i : f)
+        c += v[i];
+      return c / double(dim);
+    }
+
+    /// Measure of a face given by its dim vertices (length in 2D, area in 3D).
+    template <int dim>
+    double
+    face_measure(const std::vector<Point<dim>> &v, const std::array<unsigned int, dim> &f)
+    {
+      if constexpr (dim == 2)
+        return (v[f[1]] - v[f[0]]).norm();
+      else
+        return 0.5 * cross_product_3d(v[f[1]] - v[f[0]], v[f[2]] - v[f[0]]).norm();
+    }
+
     /// Circumcentre of a triangle (2D) or tetrahedron (3D).
     template <int dim>
     Point<dim>
