@@ -11,8 +11,10 @@ else()
   set(_command ${EXECUTABLE} ${EXTRA_ARGS})
 endif()
 if(MPI_PROCESSES GREATER 0)
-  # --oversubscribe: Open MPI refuses more processes than it counts free cores otherwise.
-  set(_command ${MPIEXEC} ${MPIEXEC_NUMPROC_FLAG} ${MPI_PROCESSES} --oversubscribe ${_command})
+  # --oversubscribe: Open MPI refuses more processes than it counts free cores otherwise;
+  # -q: no notices of mpirun's own (about the process that exited first, with a job id), so that
+  # the output of a failing run is porofrac's message alone.
+  set(_command ${MPIEXEC} ${MPIEXEC_NUMPROC_FLAG} ${MPI_PROCESSES} --oversubscribe -q ${_command})
 endif()
 execute_process(COMMAND ${_command}
   WORKING_DIRECTORY ${WORKDIR}

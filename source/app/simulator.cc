@@ -30,14 +30,34 @@ namespace porofrac
   {
     namespace
     {
-      /// Builds and reports the cut mesh, then runs the physics the deck asks for.
-      /// Whether the scene runs the distributed code on all processes (only contact mechanics
-      /// is distributed yet; other scenes run on rank 0).
+      /// Whether the scene runs the distributed code on all processes. Only contact mechanics
+      /// is distributed; 'mesh only' runs on rank 0 while the other processes wait, and the
+      /// time-dependent physics refuse to run on more than one process (check_distributable).
       bool
       distributed_scene(dealii::ParameterHandler &prm, const std::string &physics)
       {
         const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
         return physics == "contact mechanics" && (n > 1 || prm.get("Distributed") == "always");
+      }
+
+      /// Throws the same InputError on every process if the deck's physics has no distributed
+      /// code and the run has more than one MPI process (two-phase flow and poromechanics:
+      /// running them on rank 0 only would leave the other processes idle without saying so).
+      void
+      check_distributable(const std::string &physics)
+      {
+        const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        const std::string  what =
+          physics == "two-phase flow" ?
+             "the two-phase flow (TPFA Newton, time stepping) is not distributed yet" :
+             "the coupled flow and mechanics (fixed point or Newton-Krylov over the flow and the "
+             "contact mechanics) is not distributed yet";
+        check_input(n == 1 || physics == "contact mechanics" || physics == "mesh only",
+                    "Physics",
+                    "'" + physics + "' cannot run on " + std::to_string(n) +
+                      " MPI processes: " + what +
+                      "; run it on one process (without mpirun, or mpirun -np 1). Only contact "
+                      "mechanics runs distributed (doc/parallel.md)");
       }
 
       /// Takes the output directory on rank 0 of @p communicator (doc: io::OutputDirectory); the
@@ -185,6 +205,7 @@ namespace porofrac
                     (options.checkpoint_every_steps == 0 && options.checkpoint_every_seconds == 0),
                   "--checkpoint-every",
                   "only time-dependent scenes (two-phase flow, poromechanics) write checkpoints");
+      check_distributable(physics);
       // A scene that is not distributed runs on rank 0; the other processes wait in main().
       const MPI_Comm communicator =
         distributed_scene(prm, physics) ? MPI_COMM_WORLD : MPI_COMM_SELF;
