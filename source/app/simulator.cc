@@ -18,10 +18,12 @@
 #include <porofrac/io/output_directory.h>
 #include <porofrac/io/output_parameters.h>
 #include <porofrac/io/run_context.h>
+#include <porofrac/io/text.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 namespace porofrac
@@ -125,6 +127,26 @@ namespace porofrac
         geometry::write_mesh(mesh, context.path("mesh"), context.output_format);
       }
 
+      /// Axisymmetric scenes take the second coordinate as the radius r (Section 5.3): a domain
+      /// that reaches r < 0 has no meaning there. Generated domains are checked before meshing.
+      template <int dim, typename Points>
+      void
+      check_radius_non_negative(const Points &points, const std::string &parameter)
+      {
+        double r_min = std::numeric_limits<double>::max(), r_max = 0;
+        for (const auto &v : points)
+          {
+            r_min = std::min(r_min, v[1]);
+            r_max = std::max(r_max, std::abs(v[1]));
+          }
+        check_input(r_min >= -1e-12 * r_max,
+                    parameter,
+                    "the axisymmetric mode takes the second coordinate as the radius r, which "
+                    "must not be negative, but the domain reaches r = " +
+                      io::to_text(r_min) + " (move the domain to r >= 0)");
+      }
+
+      /// Builds and reports the cut mesh, then runs the physics the deck asks for.
       template <int dim>
       void
       build_and_run(dealii::ParameterHandler    &prm,
@@ -135,6 +157,25 @@ namespace porofrac
         using namespace dealii;
         geometry::GeometryParameters geometry_parameters;
         geometry_parameters.parse_parameters(prm, deck.parent_path().string());
+        // Every physics parameter set the scene uses is parsed (and validated) once, here,
+        // before the mesh is made.
+        PhysicsParameters physics_parameters;
+        if (physics == "contact mechanics" || physics == "poromechanics")
+          physics_parameters.mechanics.parse_parameters(prm, dim);
+        if (physics == "two-phase flow" || physics == "poromechanics")
+          physics_parameters.flow.parse_parameters(prm);
+        if (physics == "poromechanics")
+          physics_parameters.coupling.parse_parameters(prm);
+        const std::string axisymmetric =
+          (physics_parameters.mechanics.axisymmetric && physics != "two-phase flow") ?
+            "Mechanics/Axisymmetric" :
+          (physics_parameters.flow.axisymmetric && physics != "contact mechanics") ?
+            "Flow/Axisymmetric" :
+            "";
+        if constexpr (dim == 2)
+          if (!axisymmetric.empty() && geometry_parameters.domain != "mesh file")
+            check_radius_non_negative<dim>(
+              geometry::network_from_parameters(geometry_parameters).domain.corners, axisymmetric);
         context.progress << "*** Building the cut mesh" << std::endl;
         // Every process of a distributed scene builds the same serial cut mesh
         // (doc/parallel.md).
@@ -143,16 +184,9 @@ namespace porofrac
           TimerOutput::Scope t(context.timer, "Geometry: mesh generation and cut");
           mesh = geometry::make_cut_mesh<dim>(geometry_parameters);
         }
+        if (!axisymmetric.empty())
+          check_radius_non_negative<dim>(mesh->triangulation.get_vertices(), axisymmetric);
         collectively(context.communicator, [&]() { report_and_write_mesh(*mesh, context); });
-
-        // Every physics parameter set the scene uses is parsed (and validated) once, here.
-        PhysicsParameters physics_parameters;
-        if (physics == "contact mechanics" || physics == "poromechanics")
-          physics_parameters.mechanics.parse_parameters(prm, dim);
-        if (physics == "two-phase flow" || physics == "poromechanics")
-          physics_parameters.flow.parse_parameters(prm);
-        if (physics == "poromechanics")
-          physics_parameters.coupling.parse_parameters(prm);
 
         if (physics == "contact mechanics" && context.communicator != MPI_COMM_SELF)
           {

@@ -5,8 +5,10 @@
 #include <porofrac/geometry/polygon_network.h>
 #include <porofrac/io/text.h>
 
+#include <cmath>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <gmsh.h>
@@ -37,6 +39,41 @@ namespace porofrac
             hi[d] = std::max(corners[0][d], corners[1][d]);
           }
         return {lo, hi};
+      }
+
+      /// The id N of a physical group named "fracture N"; ids beyond 10^6 are refused rather
+      /// than truncated into another fracture's id.
+      unsigned int
+      fracture_id(const std::string &digits, const std::string &name, const std::string &parameter)
+      {
+        check_input(digits.size() <= 7 && std::stoul(digits) <= 1000000,
+                    parameter,
+                    "physical group '" + name + "': fracture ids must be in [0, 1000000]");
+        return std::stoul(digits);
+      }
+
+      /// Curves (2D) or surfaces (3D) embedded in the domain but in no physical group named
+      /// "fracture N" would silently not be fractures: refuse them.
+      void
+      check_embedded_entities_are_fractures(const unsigned int   dim,
+                                            const std::set<int> &fracture_entities,
+                                            const std::string   &parameter)
+      {
+        gmsh::vectorpair cells;
+        gmsh::model::getEntities(cells, dim);
+        for (const auto &[d, tag] : cells)
+          {
+            gmsh::vectorpair embedded;
+            gmsh::model::mesh::getEmbedded(d, tag, embedded);
+            for (const auto &[e_dim, e_tag] : embedded)
+              check_input(e_dim != static_cast<int>(dim) - 1 || fracture_entities.count(e_tag),
+                          parameter,
+                          std::string("the ") + (dim == 2 ? "curve " : "surface ") +
+                            std::to_string(e_tag) +
+                            " embedded in the domain is in no physical "
+                            "group named 'fracture N' (N the fracture id): name its group so, "
+                            "or remove it from the mesh");
+          }
       }
     } // namespace
 
@@ -105,6 +142,7 @@ namespace porofrac
       // Codimension-one physical groups: fractures and boundary parts.
       groups.clear();
       gmsh::model::getPhysicalGroups(groups, dim - 1);
+      std::set<int> fracture_entities;
       for (const auto &[d, tag] : groups)
         {
           std::string name;
@@ -114,6 +152,8 @@ namespace porofrac
             std::regex_match(name, match, std::regex("\\s*fracture[ _:]*([0-9]+)\\s*"));
           std::vector<int> group_entities;
           gmsh::model::getEntitiesForPhysicalGroup(d, tag, group_entities);
+          if (is_fracture)
+            fracture_entities.insert(group_entities.begin(), group_entities.end());
           for (const int entity : group_entities)
             {
               std::vector<std::size_t> element_tags, element_nodes;
@@ -125,7 +165,7 @@ namespace porofrac
                     face.vertices[i] = vertex(element_nodes[dim * e + i]);
                   if (is_fracture)
                     {
-                      face.tag = std::stoul(match[1]);
+                      face.tag = fracture_id(match[1], name, parameter);
                       raw.fracture_faces.push_back(face);
                     }
                   else
@@ -141,17 +181,17 @@ namespace porofrac
                 }
             }
         }
+      check_embedded_entities_are_fractures(dim, fracture_entities, parameter);
       return raw;
     }
 
 
-    void
-    set_background_size(const GeometryParameters &prm,
-                        const unsigned int        dim,
-                        std::vector<double>       fields)
+    std::vector<RefinementRegion>
+    parse_refinement_regions(const std::string &text, const unsigned int dim)
     {
-      std::stringstream regions(prm.refinement_regions);
-      std::string       item;
+      std::vector<RefinementRegion> result;
+      std::stringstream             regions(text);
+      std::string                   item;
       while (std::getline(regions, item, ';'))
         {
           item = trim(item);
@@ -171,9 +211,23 @@ namespace porofrac
           catch (...)
             {
             }
-          check_input(h > 0,
+          check_input(h > 0 && std::isfinite(h),
                       "Geometry/Refinement regions",
                       "cell size '" + trim(item.substr(colon + 1)) + "' must be a positive number");
+          result.push_back({lo, hi, h});
+        }
+      return result;
+    }
+
+
+
+    void
+    set_background_size(const GeometryParameters &prm,
+                        const unsigned int        dim,
+                        std::vector<double>       fields)
+    {
+      for (const auto &[lo, hi, h] : parse_refinement_regions(prm.refinement_regions, dim))
+        {
           const int box = gmsh::model::mesh::field::add("Box");
           gmsh::model::mesh::field::setNumber(box, "VIn", h);
           gmsh::model::mesh::field::setNumber(box, "VOut", prm.mesh_size);

@@ -6,6 +6,7 @@
 #include <porofrac/geometry/gmsh_session.h>
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/geometry/polygon_mesher.h>
+#include <porofrac/geometry/size_guard.h>
 #include <porofrac/io/text.h>
 
 #include <cmath>
@@ -200,10 +201,24 @@ namespace porofrac
       if (prm.domain == "mesh file")
         raw = read_gmsh_file<dim>(prm.mesh_file, "Geometry/Mesh file");
       else if constexpr (dim == 2)
-        raw = mesh_network(network_from_parameters(prm), prm);
+        {
+          const FractureNetwork network  = network_from_parameters(prm);
+          const auto            estimate = estimate_cells(network, prm);
+          check_cell_count(estimate.cells, prm, estimate.parameter, "about");
+          raw = mesh_network(network, prm);
+        }
       else
-        raw = mesh_polygon_network(polygon_network_from_parameters(prm, &log.random_discs), prm);
+        {
+          const PolygonNetwork network  = polygon_network_from_parameters(prm, &log.random_discs);
+          const auto           estimate = estimate_cells(network, prm);
+          check_cell_count(estimate.cells, prm, estimate.parameter, "about");
+          raw = mesh_polygon_network(network, prm);
+        }
       log.add("gmsh", timer);
+      check_cell_count(raw.cells.size() * std::pow(2., dim * prm.global_refinements),
+                       prm,
+                       "Geometry/Global refinements",
+                       "exactly");
       for (unsigned int r = 0; r < prm.global_refinements; ++r)
         raw.refine_uniformly();
       if (prm.delaunay_flips)

@@ -85,6 +85,14 @@ namespace porofrac
                         "splits every triangle into four and every fracture face into two. 3D: "
                         "Bey's red refinement, every tetrahedron into eight and every fracture "
                         "face into four (nested meshes, fracture faces stay paired).");
+      prm.declare_entry("Maximum cells",
+                        "5e6",
+                        Patterns::Double(1),
+                        "Meshes with more cells are refused before they are made: the cells of "
+                        "a generated mesh are estimated from the domain, the mesh sizes and the "
+                        "fractures before gmsh runs, and counted before the global refinements. "
+                        "Building a 3D mesh of 1.9 million cells takes 1.3 GB; solving on it "
+                        "takes many times more. Raise it on machines with the memory.");
       prm.declare_entry(
         "Delaunay flips",
         "false",
@@ -131,6 +139,7 @@ namespace porofrac
       size_expression     = prm.get("Mesh size expression");
       refinement_regions  = prm.get("Refinement regions");
       global_refinements  = prm.get_integer("Global refinements");
+      maximum_cells       = prm.get_double("Maximum cells");
       delaunay_flips      = prm.get_bool("Delaunay flips");
       algorithm           = prm.get("Mesh algorithm");
       mesh_optimization   = prm.get_bool("Mesh optimization");

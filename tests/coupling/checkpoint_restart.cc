@@ -41,7 +41,8 @@ namespace
     std::stringstream in(text(file)), out;
     for (std::string line; std::getline(in, line);)
       if (line.find("wall_time") == std::string::npos &&
-          line.find("peak_memory") == std::string::npos && line.find("_s\"") == std::string::npos)
+          line.find("memory_mb") == std::string::npos &&
+          line.find("seconds") == std::string::npos && line.find("_s\"") == std::string::npos)
         out << line << '\n';
     return out.str();
   }

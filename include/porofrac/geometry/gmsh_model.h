@@ -22,6 +22,17 @@ namespace porofrac
     RawMesh<dim>
     extract_gmsh_mesh(const std::string &parameter);
 
+    /// A box of Geometry/Refinement regions with its cell size h.
+    struct RefinementRegion
+    {
+      Point<3> lo, hi;
+      double   h;
+    };
+
+    /// Parses Geometry/Refinement regions, "(x0, y0) (x1, y1): h; ..." (3D: with z).
+    std::vector<RefinementRegion>
+    parse_refinement_regions(const std::string &text, const unsigned int dim);
+
     /**
      * Adds to the current gmsh model the size fields every generated mesh has: the refinement
      * boxes (Geometry/Refinement regions, in @p dim coordinates), the size expression and the

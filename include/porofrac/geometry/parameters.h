@@ -36,6 +36,7 @@ namespace porofrac
       std::string  size_expression;            ///< optional gmsh MathEval size field in x, y, z
       std::string  refinement_regions;         ///< "(x0, y0) (x1, y1): h; ..."
       unsigned int global_refinements = 0;
+      double       maximum_cells      = 5e6; ///< larger meshes are refused before they are made
       bool delaunay_flips   = false; ///< restore the Delaunay property after meshing/refinement
       std::string algorithm = "delaunay";   ///< delaunay | frontal-delaunay
       bool        mesh_optimization = true; ///< 3D: gmsh's tetrahedron optimization after Delaunay
