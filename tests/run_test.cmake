@@ -10,6 +10,12 @@ if(INPUT)
 else()
   set(_command ${EXECUTABLE} ${EXTRA_ARGS})
 endif()
+if(MPI_PROCESSES GREATER 0)
+  # --oversubscribe: Open MPI refuses more processes than it counts free cores otherwise;
+  # -q: no notices of mpirun's own (about the process that exited first, with a job id), so that
+  # the output of a failing run is porofrac's message alone.
+  set(_command ${MPIEXEC} ${MPIEXEC_NUMPROC_FLAG} ${MPI_PROCESSES} --oversubscribe -q ${_command})
+endif()
 execute_process(COMMAND ${_command}
   WORKING_DIRECTORY ${WORKDIR}
   OUTPUT_VARIABLE _out ERROR_VARIABLE _err RESULT_VARIABLE _status)

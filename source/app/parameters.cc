@@ -22,6 +22,16 @@ namespace porofrac
         "mesh only",
         Patterns::Selection("mesh only|contact mechanics|two-phase flow|poromechanics"),
         "What the scene solves. 'mesh only' builds, checks and writes the cut mesh.");
+      prm.declare_entry(
+        "Distributed",
+        "auto",
+        Patterns::Selection("auto|always"),
+        "Contact mechanics: 'auto' runs the distributed code (METIS partition, Trilinos, MUMPS or "
+        "the iterative solver of Mechanics/Distributed linear solver; doc/parallel.md) when the "
+        "run has more than one MPI process and the serial code otherwise; 'always' runs the "
+        "distributed code on one process too. 'mesh only' runs on rank 0 while the other processes "
+        "wait; two-phase flow and poromechanics are not distributed yet and stop with an error "
+        "on more than one process.");
       prm.declare_entry("Scene name",
                         "",
                         Patterns::Anything(),

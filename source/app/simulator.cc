@@ -10,6 +10,8 @@
 #include <porofrac/app/two_phase_flow_scene.h>
 #include <porofrac/base/config.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/mpi_tools.h>
+#include <porofrac/geometry/distributed_cut_mesh.h>
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/geometry/parameters.h>
@@ -18,9 +20,11 @@
 #include <porofrac/io/run_context.h>
 #include <porofrac/io/text.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <memory>
 
 namespace porofrac
 {
@@ -28,6 +32,101 @@ namespace porofrac
   {
     namespace
     {
+      /// Whether the scene runs the distributed code on all processes. Only contact mechanics
+      /// is distributed; 'mesh only' runs on rank 0 while the other processes wait, and the
+      /// time-dependent physics refuse to run on more than one process (check_distributable).
+      bool
+      distributed_scene(dealii::ParameterHandler &prm, const std::string &physics)
+      {
+        const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        return physics == "contact mechanics" && (n > 1 || prm.get("Distributed") == "always");
+      }
+
+      /// Throws the same InputError on every process if the deck's physics has no distributed
+      /// code and the run has more than one MPI process (two-phase flow and poromechanics:
+      /// running them on rank 0 only would leave the other processes idle without saying so).
+      void
+      check_distributable(const std::string &physics)
+      {
+        const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        const std::string  what =
+          physics == "two-phase flow" ?
+             "the two-phase flow (TPFA Newton, time stepping) is not distributed yet" :
+             "the coupled flow and mechanics (fixed point or Newton-Krylov over the flow and the "
+             "contact mechanics) is not distributed yet";
+        check_input(n == 1 || physics == "contact mechanics" || physics == "mesh only",
+                    "Physics",
+                    "'" + physics + "' cannot run on " + std::to_string(n) +
+                      " MPI processes: " + what +
+                      "; run it on one process (without mpirun, or mpirun -np 1). Only contact "
+                      "mechanics runs distributed (doc/parallel.md)");
+      }
+
+      /// Takes the output directory on rank 0 of @p communicator (doc: io::OutputDirectory); the
+      /// other processes wait until it exists. A run that resumes in the directory of its
+      /// checkpoint keeps the files written so far.
+      std::unique_ptr<io::OutputDirectory>
+      take_output_directory(const std::string &output_directory,
+                            const std::string &restart_directory,
+                            const MPI_Comm     communicator)
+      {
+        std::error_code ec;
+        const bool      resume_in_place =
+          !restart_directory.empty() &&
+          std::filesystem::equivalent(restart_directory, output_directory, ec);
+        std::unique_ptr<io::OutputDirectory> lock;
+        collectively(communicator, [&]() {
+          if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+            lock = std::make_unique<io::OutputDirectory>(output_directory,
+                                                         "Output/Directory (or --output-dir)",
+                                                         resume_in_place);
+        });
+        return lock;
+      }
+
+      /// summary.json (rank 0) with the status, the wall time and the peak memory of every
+      /// process of the scene. Collective.
+      void
+      write_summary(const std::string &status,
+                    const std::string &reason,
+                    const double       wall_time,
+                    io::RunContext    &context)
+      {
+        using namespace dealii;
+        Utilities::System::MemoryStats memory;
+        Utilities::System::get_memory_stats(memory);
+        const std::vector<double> peak =
+          Utilities::MPI::gather(context.communicator, memory.VmHWM / 1024., 0);
+        if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
+          return;
+        io::Json &summary = context.summary;
+        summary["status"] = status;
+        if (!reason.empty())
+          summary["reason"] = reason;
+        summary["wall_time_s"]             = wall_time;
+        summary["peak_memory_mb"]          = *std::max_element(peak.begin(), peak.end());
+        summary["peak_memory_mb_per_rank"] = peak;
+        summary.write_file(context.path("summary.json"));
+        context.progress << "*** Wrote " << context.path("summary.json") << std::endl;
+      }
+
+      /// Reports the cut mesh and writes its files (rank 0 of the scene's processes).
+      template <int dim>
+      void
+      report_and_write_mesh(const geometry::CutMesh<dim> &mesh, io::RunContext &context)
+      {
+        using namespace dealii;
+        if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
+          return;
+        report_mesh(mesh, context);
+        context.summary["n_cells"]          = mesh.triangulation.n_active_cells();
+        context.summary["n_fracture_faces"] = static_cast<unsigned int>(mesh.fracture_faces.size());
+        context.summary["n_dofs_mechanics"] = 0;
+        context.summary["n_unknowns_flow"]  = 0;
+        TimerOutput::Scope t(context.timer, "Output: mesh");
+        geometry::write_mesh(mesh, context.path("mesh"), context.output_format);
+      }
+
       /// Axisymmetric scenes take the second coordinate as the radius r (Section 5.3): a domain
       /// that reaches r < 0 has no meaning there. Generated domains are checked before meshing.
       template <int dim, typename Points>
@@ -79,6 +178,8 @@ namespace porofrac
             check_radius_non_negative<dim>(
               geometry::network_from_parameters(geometry_parameters).domain.corners, axisymmetric);
         context.progress << "*** Building the cut mesh" << std::endl;
+        // Every process of a distributed scene builds the same serial cut mesh
+        // (doc/parallel.md).
         std::unique_ptr<geometry::CutMesh<dim>> mesh;
         {
           TimerOutput::Scope t(context.timer, "Geometry: mesh generation and cut");
@@ -86,19 +187,19 @@ namespace porofrac
         }
         if (!axisymmetric.empty())
           check_radius_non_negative<dim>(mesh->triangulation.get_vertices(), axisymmetric);
-        report_mesh(*mesh, context);
-        context.summary["n_cells"] = mesh->triangulation.n_active_cells();
-        context.summary["n_fracture_faces"] =
-          static_cast<unsigned int>(mesh->fracture_faces.size());
-        context.summary["n_dofs_mechanics"] = 0;
-        context.summary["n_unknowns_flow"]  = 0;
-        {
-          TimerOutput::Scope t(context.timer, "Output: mesh");
-          geometry::write_mesh(*mesh, context.path("mesh"), context.output_format);
-        }
+        collectively(context.communicator, [&]() { report_and_write_mesh(*mesh, context); });
 
-
-        if (physics == "contact mechanics")
+        if (physics == "contact mechanics" && context.communicator != MPI_COMM_SELF)
+          {
+            std::unique_ptr<geometry::DistributedCutMesh<dim>> distributed;
+            {
+              TimerOutput::Scope t(context.timer, "Geometry: partition and distribution");
+              distributed =
+                std::make_unique<geometry::DistributedCutMesh<dim>>(*mesh, context.communicator);
+            }
+            run_contact_mechanics_scene(physics_parameters, *distributed, context);
+          }
+        else if (physics == "contact mechanics")
           run_contact_mechanics_scene(physics_parameters, *mesh, context);
         else if (physics == "two-phase flow")
           run_two_phase_flow_scene(physics_parameters, *mesh, context);
@@ -139,23 +240,26 @@ namespace porofrac
                     (options.checkpoint_every_steps == 0 && options.checkpoint_every_seconds == 0),
                   "--checkpoint-every",
                   "only time-dependent scenes (two-phase flow, poromechanics) write checkpoints");
-      // A run that resumes in the directory of its checkpoint keeps the files written so far.
-      std::error_code ec;
-      const bool      resume_in_place =
-        !options.restart_directory.empty() &&
-        std::filesystem::equivalent(options.restart_directory, output_directory, ec);
-      const io::OutputDirectory directory_lock(output_directory,
-                                               "Output/Directory (or --output-dir)",
-                                               resume_in_place);
+      check_distributable(physics);
+      // A scene that is not distributed runs on rank 0; the other processes wait in main().
+      const MPI_Comm communicator =
+        distributed_scene(prm, physics) ? MPI_COMM_WORLD : MPI_COMM_SELF;
+      const bool rank_0 = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (!rank_0 && communicator == MPI_COMM_SELF)
+        return;
+      const auto directory_lock =
+        take_output_directory(output_directory, options.restart_directory, communicator);
 
-      ConditionalOStream progress(std::cout, verbosity != "quiet");
-      ConditionalOStream verbose(std::cout, verbosity == "verbose");
+      ConditionalOStream progress(std::cout, verbosity != "quiet" && rank_0);
+      ConditionalOStream verbose(std::cout, verbosity == "verbose" && rank_0);
       TimerOutput        timer(progress, TimerOutput::never, TimerOutput::wall_times);
       io::Json           summary  = io::Json::object();
       summary["scene"]            = scene;
       summary["physics"]          = physics;
       summary["dim"]              = dim;
       summary["porofrac_version"] = version;
+      summary["n_mpi_ranks"]      = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      summary["distributed"]      = communicator != MPI_COMM_SELF;
       io::RunContext context{deck.filename().string(),
                              output_directory,
                              report,
@@ -164,20 +268,13 @@ namespace porofrac
                              timer,
                              summary,
                              format,
-                             options};
+                             options,
+                             communicator};
 
       // summary.json is written whatever happens after this point: a failed or interrupted
       // run says so (status and reason) next to the last accepted state its scene wrote.
       const auto finish = [&](const std::string &status, const std::string &reason) {
-        summary["status"] = status;
-        if (!reason.empty())
-          summary["reason"] = reason;
-        summary["wall_time_s"] = wall_clock.wall_time();
-        Utilities::System::MemoryStats memory;
-        Utilities::System::get_memory_stats(memory);
-        summary["peak_memory_mb"] = memory.VmHWM / 1024.;
-        summary.write_file(context.path("summary.json"));
-        progress << "*** Wrote " << context.path("summary.json") << std::endl;
+        write_summary(status, reason, wall_clock.wall_time(), context);
       };
       try
         {

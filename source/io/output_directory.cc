@@ -24,6 +24,7 @@ namespace porofrac
         static const std::regex pattern(
           "summary\\.json|history\\.csv|fractures\\.csv|fracture_p2\\.csv|checkpoint\\.bin|"
           "(mesh|mesh_fractures|fractures|displacement)\\.(vtu|vtk)|"
+          "displacement(_[0-9]+\\.(vtu|vtk)|\\.pvtu)|"
           "(flow|poromechanics)(-[0-9]+(_fractures|_displacement)?\\.(vtu|vtk|pvtu)|\\.pvd)");
         return std::regex_match(name, pattern);
       }

@@ -45,8 +45,45 @@ namespace porofrac
 
 
     template <int dim>
+    std::vector<ContactFaceValues<dim>>
+    contact_face_values(const ContactProblem<dim> &problem)
+    {
+      std::vector<ContactFaceValues<dim>> values;
+      for (const auto &face : problem.get_mesh().fracture_faces)
+        values.push_back(contact_face_values(problem, face.index));
+      return values;
+    }
+
+
+
+    template <int dim>
+    FaceStateCounts
+    count_states(const geometry::CutMesh<dim>              &mesh,
+                 const std::vector<ContactFaceValues<dim>> &values,
+                 const int                                  fracture_id)
+    {
+      FaceStateCounts c{{0, 0, 0}};
+      for (const auto &face : mesh.fracture_faces)
+        if (fracture_id < 0 || int(face.fracture_id) == fracture_id)
+          ++c[static_cast<unsigned int>(values[face.index].state)];
+      return c;
+    }
+
+
+
+    template <int dim>
     void
     append_contact_fields(const ContactProblem<dim> &problem, geometry::FractureFields &fields)
+    {
+      append_contact_fields(contact_face_values(problem), fields);
+    }
+
+
+
+    template <int dim>
+    void
+    append_contact_fields(const std::vector<ContactFaceValues<dim>> &values,
+                          geometry::FractureFields                  &fields)
     {
       std::vector<std::string> names = {"jump_n", "jump_t", "lambda_n", "lambda_t"};
       if (dim == 3)
@@ -55,10 +92,9 @@ namespace porofrac
       const unsigned int first = fields.size();
       for (const std::string &name : names)
         fields.emplace_back(name, std::vector<double>());
-      for (const auto &face : problem.get_mesh().fracture_faces)
+      for (const ContactFaceValues<dim> &v : values)
         {
           using V                 = ContactFaceValues<dim>;
-          const V             v   = contact_face_values(problem, face.index);
           std::vector<double> row = {v.jump[0],
                                      V::tangential(v.jump),
                                      v.lambda[0],
@@ -91,11 +127,25 @@ namespace porofrac
                               const std::vector<double> *aperture,
                               const double              *time)
     {
+      write_fracture_table_rows(
+        out, problem.get_mesh(), contact_face_values(problem), aperture, time);
+    }
+
+
+
+    template <int dim>
+    void
+    write_fracture_table_rows(std::ostream                              &out,
+                              const geometry::CutMesh<dim>              &mesh,
+                              const std::vector<ContactFaceValues<dim>> &values,
+                              const std::vector<double>                 *aperture,
+                              const double                              *time)
+    {
       using V              = ContactFaceValues<dim>;
       const auto precision = out.precision(10);
-      for (const auto &face : problem.get_mesh().fracture_faces)
+      for (const auto &face : mesh.fracture_faces)
         {
-          const V v = contact_face_values(problem, face.index);
+          const V &v = values[face.index];
           out << face.fracture_id << ',' << face.index << ',' << face.abscissa << ','
               << face.centre[0] << ',' << face.centre[1] << ',';
           if (dim == 3)
@@ -133,17 +183,28 @@ namespace porofrac
       geometry::write_data_out(data_out, filename, format);
     }
 
-#define POROFRAC_INSTANTIATE_FRACTURE_FIELDS(dim)                                               \
-  template FaceStateCounts        count_states(const ContactProblem<dim> &, const int);         \
-  template ContactFaceValues<dim> contact_face_values(const ContactProblem<dim> &,              \
-                                                      const unsigned int);                      \
-  template void append_contact_fields(const ContactProblem<dim> &, geometry::FractureFields &); \
-  template void write_fracture_table_rows(std::ostream &,                                       \
-                                          const ContactProblem<dim> &,                          \
-                                          const std::vector<double> *,                          \
-                                          const double *);                                      \
-  template void write_displacement(const ContactProblem<dim> &,                                 \
-                                   const std::string &,                                         \
+#define POROFRAC_INSTANTIATE_FRACTURE_FIELDS(dim)                                                        \
+  template FaceStateCounts        count_states(const ContactProblem<dim> &, const int);                  \
+  template ContactFaceValues<dim> contact_face_values(const ContactProblem<dim> &,                       \
+                                                      const unsigned int);                               \
+  template void append_contact_fields(const ContactProblem<dim> &, geometry::FractureFields &);          \
+  template std::vector<ContactFaceValues<dim>> contact_face_values(const ContactProblem<dim> &);         \
+  template FaceStateCounts                     count_states(const geometry::CutMesh<dim> &,              \
+                                                            const std::vector<ContactFaceValues<dim>> &, \
+                                                            const int);                                  \
+  template void append_contact_fields(const std::vector<ContactFaceValues<dim>> &,                       \
+                                      geometry::FractureFields &);                                       \
+  template void write_fracture_table_rows(std::ostream &,                                                \
+                                          const geometry::CutMesh<dim> &,                                \
+                                          const std::vector<ContactFaceValues<dim>> &,                   \
+                                          const std::vector<double> *,                                   \
+                                          const double *);                                               \
+  template void write_fracture_table_rows(std::ostream &,                                                \
+                                          const ContactProblem<dim> &,                                   \
+                                          const std::vector<double> *,                                   \
+                                          const double *);                                               \
+  template void write_displacement(const ContactProblem<dim> &,                                          \
+                                   const std::string &,                                                  \
                                    const std::string &);
     POROFRAC_INSTANTIATE_FRACTURE_FIELDS(2)
     POROFRAC_INSTANTIATE_FRACTURE_FIELDS(3)

@@ -4,6 +4,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/interrupt.h>
 #include <porofrac/mechanics/contact_solver.h>
+#include <porofrac/mechanics/distributed_elasticity_system.h>
 
 #include <cmath>
 #include <iomanip>
@@ -13,12 +14,12 @@ namespace porofrac
 {
   namespace mechanics
   {
-    template <int dim>
-    ContactSolver<dim>::ContactSolver(const ElasticitySystem<dim> &system,
-                                      const FrictionField<dim>    &friction,
-                                      const ContactParameters     &parameters,
-                                      ConditionalOStream          &progress,
-                                      TimerOutput                 &timer)
+    template <int dim, typename System>
+    ContactSolver<dim, System>::ContactSolver(const System             &system,
+                                              const FrictionField<dim> &friction,
+                                              const ContactParameters  &parameters,
+                                              ConditionalOStream       &progress,
+                                              TimerOutput              &timer)
         : system(system)
         , friction_field(friction)
         , prm(parameters)
@@ -29,9 +30,9 @@ namespace porofrac
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     void
-    ContactSolver<dim>::reset()
+    ContactSolver<dim, System>::reset()
     {
       if (linear_solver)
         linear_solver->reset();
@@ -39,54 +40,54 @@ namespace porofrac
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     void
-    ContactSolver<dim>::clear()
+    ContactSolver<dim, System>::clear()
     {
       linear_solver.reset();
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     std::string
-    ContactSolver<dim>::linear_solver_name() const
+    ContactSolver<dim, System>::linear_solver_name() const
     {
       return linear_solver ? linear_solver->name() : std::string();
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     const ContactLinearSolverStatistics *
-    ContactSolver<dim>::linear_solver_statistics() const
+    ContactSolver<dim, System>::linear_solver_statistics() const
     {
       return linear_solver ? &linear_solver->statistics() : nullptr;
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     LocalContactLaw<dim>
-    ContactSolver<dim>::local_law(const unsigned int f, const double slip, const double c) const
+    ContactSolver<dim, System>::local_law(const unsigned int f,
+                                          const double       slip,
+                                          const double       c) const
     {
       return {friction_field.coefficient(f, slip), c};
     }
 
 
 
-    template <int dim>
-    typename ContactSolver<dim>::FaceValues
-    ContactSolver<dim>::local_values(const Vector<double> &u,
-                                     const Vector<double> &lambda,
-                                     const unsigned int    f) const
+    template <int dim, typename System>
+    typename ContactSolver<dim, System>::FaceValues
+    ContactSolver<dim, System>::local_values(const Tensor<1, dim> &jump,
+                                             const Tensor<1, dim> &lambda,
+                                             const unsigned int    f) const
     {
       const Tensor<2, dim> R = system.frame(f);
       FaceValues           v;
-      for (unsigned int d = 0; d < dim; ++d)
-        v.lambda[d] = lambda(dim * f + d);
-      v.lambda = R * v.lambda;
-      v.jump   = R * system.jump(u, f);
+      v.lambda = R * lambda;
+      v.jump   = R * jump;
       v.slip   = LocalContactLaw<dim>::tangential(v.jump).norm();
       // Paper (25): the tangential part is the increment over the time step.
       if (!previous_jump.empty())
@@ -96,85 +97,112 @@ namespace porofrac
 
 
 
-    template <int dim>
+    template <int dim, typename System>
+    Tensor<1, dim>
+    ContactSolver<dim, System>::face_multiplier(const VectorType  &lambda,
+                                                const unsigned int f) const
+    {
+      Tensor<1, dim> l;
+      for (unsigned int d = 0; d < dim; ++d)
+        l[d] = lambda(dim * f + d);
+      return l;
+    }
+
+
+
+    template <int dim, typename System>
+    bool
+    ContactSolver<dim, System>::same_states(const std::vector<FaceState> &a,
+                                            const std::vector<FaceState> &b) const
+    {
+      return system.all_processes(a == b);
+    }
+
+
+
+    template <int dim, typename System>
     void
-    ContactSolver<dim>::set_previous_jumps(const std::vector<Tensor<1, dim>> &jumps)
+    ContactSolver<dim, System>::set_previous_jumps(const std::vector<Tensor<1, dim>> &jumps)
     {
       previous_jump = jumps;
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     double
-    ContactSolver<dim>::friction(const Vector<double> &u, const unsigned int f) const
+    ContactSolver<dim, System>::friction(const Tensor<1, dim> &jump, const unsigned int f) const
     {
-      const double slip =
-        LocalContactLaw<dim>::tangential(system.frame(f) * system.jump(u, f)).norm();
+      const double slip = LocalContactLaw<dim>::tangential(system.frame(f) * jump).norm();
       return friction_field.coefficient(f, slip);
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     FaceState
-    ContactSolver<dim>::state(const Vector<double> &u,
-                              const Vector<double> &lambda,
-                              const unsigned int    f) const
+    ContactSolver<dim, System>::state(const Tensor<1, dim> &jump,
+                                      const Tensor<1, dim> &lambda,
+                                      const unsigned int    f) const
     {
-      const FaceValues v = local_values(u, lambda, f);
+      const FaceValues v = local_values(jump, lambda, f);
       return local_law(f, v.slip, prm.c).state(v.lambda, v.jump);
     }
 
 
 
-    template <int dim>
-    typename ContactSolver<dim>::ResidualParts
-    ContactSolver<dim>::residual_parts(const Vector<double> &u,
-                                       const Vector<double> &lambda,
-                                       const double          c) const
+    template <int dim, typename System>
+    typename ContactSolver<dim, System>::ResidualParts
+    ContactSolver<dim, System>::residual_parts(const VectorType &u,
+                                               const VectorType &lambda,
+                                               const double      c) const
     {
-      ResidualParts parts;
       // Mechanical rows: f - K u - B^T lambda on unconstrained dofs.
-      Vector<double> r;
-      system.apply_elasticity(u, r);
-      r.sadd(-1., system.load());
-      const auto &coupling = system.get_coupling();
-      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
-        for (const auto &e : coupling[fi])
-          r(e.dof) -= e.value * lambda(dim * fi + e.component);
-      const auto &f = system.load();
-      for (unsigned int i = 0; i < r.size(); ++i)
-        if (!system.get_constraints().is_constrained(i))
-          {
-            parts.mechanical += r(i) * r(i);
-            parts.load += f(i) * f(i);
-          }
+      const auto [mechanical, load] = system.mechanical_residual_norms(u, lambda);
       // Contact rows, (25)-(26) scaled to stress units, weighted by |sigma|.
-      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+      std::vector<Tensor<1, dim>> jumps;
+      system.face_jumps(u, jumps);
+      double contact = 0, contact_unscaled = 0, lambda2 = 0, c_jump = 0, jump = 0, measure = 0,
+             stick_slip = 0;
+      for (unsigned int fi = 0; fi < system.n_faces(); ++fi)
         {
-          const FaceValues           v = local_values(u, lambda, fi);
+          if (!system.owns_face(fi))
+            continue;
+          const FaceValues           v = local_values(jumps[fi], face_multiplier(lambda, fi), fi);
           const Tensor<1, dim>      &l = v.lambda, &j = v.jump;
           const LocalContactLaw<dim> law = local_law(fi, v.slip, c);
           const double               w   = system.face_measure(fi);
-          parts.contact += w * law.residual(l, j, true).norm_square();
-          parts.contact_unscaled += w * law.residual(l, j, false).norm_square();
-          parts.lambda += w * l.norm_square();
-          parts.c_jump += w * (c * j).norm_square();
-          parts.jump += w * j.norm_square();
-          parts.measure += w;
+          contact += w * law.residual(l, j, true).norm_square();
+          contact_unscaled += w * law.residual(l, j, false).norm_square();
+          lambda2 += w * l.norm_square();
+          c_jump += w * (c * j).norm_square();
+          jump += w * j.norm_square();
+          measure += w;
           if (law.state(l, j) == FaceState::stick)
-            parts.stick_slip += w * LocalContactLaw<dim>::tangential(j).norm_square();
+            stick_slip += w * LocalContactLaw<dim>::tangential(j).norm_square();
         }
-      parts.u_max = u.linfty_norm();
+      std::vector<double> sums = {
+        mechanical, load, contact, contact_unscaled, lambda2, c_jump, jump, measure, stick_slip};
+      system.sum_over_processes(sums);
+      ResidualParts parts;
+      parts.mechanical       = sums[0];
+      parts.load             = sums[1];
+      parts.contact          = sums[2];
+      parts.contact_unscaled = sums[3];
+      parts.lambda           = sums[4];
+      parts.c_jump           = sums[5];
+      parts.jump             = sums[6];
+      parts.measure          = sums[7];
+      parts.stick_slip       = sums[8];
+      parts.u_max            = u.linfty_norm();
       return parts;
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     double
-    ContactSolver<dim>::merit(const ResidualParts &r, const double scale2)
+    ContactSolver<dim, System>::merit(const ResidualParts &r, const double scale2)
     {
       const double rel_c = (scale2 > 0 ? std::sqrt(r.contact / scale2) : std::sqrt(r.contact));
       const double rel_m = (r.load > 0 ? std::sqrt(r.mechanical / r.load) : 0.);
@@ -183,10 +211,10 @@ namespace porofrac
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     double
-    ContactSolver<dim>::relative_residual(const Vector<double> &u,
-                                          const Vector<double> &lambda) const
+    ContactSolver<dim, System>::relative_residual(const VectorType &u,
+                                                  const VectorType &lambda) const
     {
       const ResidualParts r = residual_parts(u, lambda, prm.c);
       // lambda is the scale of C unless it is zero or round-off against c [u] (every face open:
@@ -201,49 +229,44 @@ namespace porofrac
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     void
-    ContactSolver<dim>::set_initial_guess(Vector<double> &u, Vector<double> &lambda) const
+    ContactSolver<dim, System>::set_initial_guess(VectorType &u, VectorType &lambda) const
     {
       // u = 0 with the Dirichlet values; open: lambda = 0, stick: lambda_n = given.
       system.initial_displacement(u);
-      lambda.reinit(dim * system.get_mesh().fracture_faces.size());
+      system.reinit_multipliers(lambda);
       if (prm.stick_guess)
         for (const auto &face : system.get_mesh().fracture_faces)
-          for (unsigned int d = 0; d < dim; ++d)
-            lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
+          if (system.owns_face(face.index))
+            for (unsigned int d = 0; d < dim; ++d)
+              lambda(dim * face.index + d) = prm.initial_lambda_n * face.normal[d];
+      lambda.compress(VectorOperation::insert);
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     void
-    ContactSolver<dim>::linearize(const Vector<double>   &u,
-                                  const Vector<double>   &lambda,
-                                  const double            c,
-                                  FaceRows<dim>          &rows,
-                                  Vector<double>         &rhs,
-                                  std::vector<FaceState> &states) const
+    ContactSolver<dim, System>::linearize(const VectorType       &u,
+                                          const VectorType       &lambda,
+                                          const double            c,
+                                          FaceRows<dim>          &rows,
+                                          VectorType             &rhs,
+                                          std::vector<FaceState> &states) const
     {
-      const unsigned int n_u         = system.n_displacement_dofs();
-      const auto        &coupling    = system.get_coupling();
-      const auto        &constraints = system.get_homogeneous_constraints();
-      const auto        &f           = system.load();
-      rhs                            = 0;
+      rhs = 0;
       // Mechanical residual f - K u - B^T lambda.
-      Vector<double> r;
-      system.apply_elasticity(u, r);
-      for (unsigned int i = 0; i < n_u; ++i)
-        rhs(i) = constraints.is_constrained(i) ? 0. : f(i) - r(i);
-      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
-        for (const auto &e : coupling[fi])
-          if (!constraints.is_constrained(e.dof))
-            rhs(e.dof) -= e.value * lambda(dim * fi + e.component);
+      system.mechanical_rhs(u, lambda, rhs);
       // Face rows A_l R lambda + A_j R [u] = r of the contact method, for the increment.
-      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+      std::vector<Tensor<1, dim>> jumps;
+      system.face_jumps(u, jumps);
+      for (unsigned int fi = 0; fi < system.n_faces(); ++fi)
         {
+          if (!system.owns_face(fi))
+            continue;
           const Tensor<2, dim>  R = system.frame(fi);
-          const FaceValues      v = local_values(u, lambda, fi);
+          const FaceValues      v = local_values(jumps[fi], face_multiplier(lambda, fi), fi);
           const Tensor<1, dim> &l = v.lambda, &j = v.jump;
           LocalRows<dim>        lr;
           states[fi]              = method->rows(local_law(fi, v.slip, c), l, j, lr);
@@ -251,22 +274,23 @@ namespace porofrac
           rows.lambda[fi]         = lr.A_lambda * R;
           rows.jump[fi]           = lr.A_jump * R;
           for (unsigned int i = 0; i < dim; ++i)
-            rhs(n_u + dim * fi + i) = rs[i];
+            rhs(system.multiplier_index(fi, i)) = rs[i];
         }
+      rhs.compress(VectorOperation::insert);
     }
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     double
-    ContactSolver<dim>::cycle_damping_factor(const std::vector<FaceState> &states,
-                                             const unsigned int            iteration)
+    ContactSolver<dim, System>::cycle_damping_factor(const std::vector<FaceState> &states,
+                                                     const unsigned int            iteration)
     {
       // States equal to those of an earlier iterate other than the previous one mean that the
       // iteration revisits a set: damp the step.
       if (prm.cycle_damping > 0)
         for (unsigned int k = 0; k + 1 < seen_states.size(); ++k)
-          if (seen_states[k] == states && seen_states.back() != states)
+          if (same_states(seen_states[k], states) && !same_states(seen_states.back(), states))
             {
               ++stats.cycles_detected;
               progress << "    contact iteration " << iteration
@@ -279,22 +303,18 @@ namespace porofrac
 
 
 
-    template <int dim>
+    template <int dim, typename System>
     double
-    ContactSolver<dim>::take_step(const Vector<double> &u_old,
-                                  const Vector<double> &lambda_old,
-                                  const Vector<double> &delta,
-                                  const double          alpha_max,
-                                  const double          c,
-                                  Vector<double>       &u,
-                                  Vector<double>       &lambda)
+    ContactSolver<dim, System>::take_step(const VectorType &u_old,
+                                          const VectorType &lambda_old,
+                                          const VectorType &delta,
+                                          const double      alpha_max,
+                                          const double      c,
+                                          VectorType       &u,
+                                          VectorType       &lambda)
     {
-      const unsigned int n_u      = u.size();
-      const auto         set_step = [&](const double alpha) {
-        for (unsigned int i = 0; i < n_u; ++i)
-          u(i) = u_old(i) + alpha * delta(i);
-        for (unsigned int i = 0; i < lambda.size(); ++i)
-          lambda(i) = lambda_old(i) + alpha * delta(n_u + i);
+      const auto set_step = [&](const double alpha) {
+        system.set_step(u_old, lambda_old, delta, alpha, u, lambda);
       };
       double alpha = alpha_max;
       set_step(alpha);
@@ -347,13 +367,23 @@ namespace porofrac
 
 
 
-    template <int dim>
-    const ContactStatistics &
-    ContactSolver<dim>::solve(Vector<double> &u, Vector<double> &lambda, const bool cold_start)
+    template <int dim, typename System>
+    void
+    ContactSolver<dim, System>::stop_if_interrupted() const
     {
-      const unsigned int n_u = system.n_displacement_dofs();
-      const unsigned int n_f = system.get_coupling().size();
-      stats                  = ContactStatistics();
+      if (system.all_processes(interrupt_signal() == 0))
+        return;
+      throw_if_interrupted("in a contact iteration");
+      throw Interrupted("another process received a signal; stopped in a contact iteration");
+    }
+
+
+
+    template <int dim, typename System>
+    void
+    ContactSolver<dim, System>::prepare()
+    {
+      stats = ContactStatistics();
       seen_states.clear();
       line_search_on = false;
       if (!method || method_name != prm.method)
@@ -363,11 +393,61 @@ namespace porofrac
         }
       if (!linear_solver)
         {
-          linear_solver = ContactLinearSolverRegistry<dim>::instance().create(
-            prm.linear_solver, "Mechanics/Linear solver", system, prm, progress, timer);
+          linear_solver = ContactLinearSolverRegistry<dim, System>::instance().create(
+            System::linear_solver_name(prm),
+            System::linear_solver_parameter,
+            system,
+            prm,
+            progress,
+            timer);
           stats.time_cholesky = linear_solver->statistics().time_cholesky;
           stats.time_form_W   = linear_solver->statistics().time_form_W;
         }
+    }
+
+
+
+    template <int dim, typename System>
+    void
+    ContactSolver<dim, System>::solve_linear_system(const FaceRows<dim>          &rows,
+                                                    const std::vector<FaceState> &states,
+                                                    const VectorType             &rhs,
+                                                    VectorType                   &delta)
+    {
+      TimerOutput::Scope t(timer, "Mechanics: factorization and solve");
+      unsigned int       changed = 0;
+      if (!seen_states.empty())
+        for (unsigned int fi = 0; fi < states.size(); ++fi)
+          changed += (seen_states.back()[fi] != states[fi]);
+      // Inexact steps: the linear residual follows the nonlinear one (Eisenstat-Walker's
+      // choice 2 without safeguards), capped by the deck's tolerance.
+      const double last = stats.residual_history.empty() ? 1. : stats.residual_history.back();
+      linear_solver->set_tolerance(std::min(prm.linear_tolerance, prm.linear_forcing * last));
+      linear_solver->solve(rows, changed, rhs, delta);
+    }
+
+
+
+    template <int dim, typename System>
+    void
+    ContactSolver<dim, System>::record_linear_statistics(const ContactLinearSolverStatistics &start)
+    {
+      const ContactLinearSolverStatistics &now = linear_solver->statistics();
+      stats.factorizations                     = now.factorizations - start.factorizations;
+      stats.reused_factorizations = now.reused_factorizations - start.reused_factorizations;
+      stats.linear_iterations     = now.linear_iterations - start.linear_iterations;
+      stats.direct_fallbacks      = now.direct_fallbacks - start.direct_fallbacks;
+      stats.time_factorization    = now.time_factorization - start.time_factorization;
+      stats.time_solves           = now.time_solves - start.time_solves;
+    }
+
+
+
+    template <int dim, typename System>
+    const ContactStatistics &
+    ContactSolver<dim, System>::solve(VectorType &u, VectorType &lambda, const bool cold_start)
+    {
+      prepare();
       const ContactLinearSolverStatistics start = linear_solver->statistics();
       if (cold_start)
         set_initial_guess(u, lambda);
@@ -375,31 +455,25 @@ namespace porofrac
       const double        g0_norm2 = g0.mechanical + g0.contact_unscaled;
       // Continuation in c: the complementarity functions (25)-(26) have the same zeros for
       // every c > 0, so c may move from c_start to the target during the iterations.
-      double         c_now = (prm.c_start > 0 ? prm.c_start : prm.c);
-      Vector<double> rhs(system.n_dofs()), delta(system.n_dofs()), u_old(n_u),
-        lambda_old(lambda.size());
+      double     c_now = (prm.c_start > 0 ? prm.c_start : prm.c);
+      VectorType rhs, delta, u_old(u), lambda_old(lambda);
+      system.reinit_step(rhs);
+      system.reinit_step(delta);
       FaceRows<dim> rows;
-      rows.lambda.resize(n_f);
-      rows.jump.resize(n_f);
+      rows.lambda.resize(system.n_faces());
+      rows.jump.resize(system.n_faces());
       Timer clock;
       for (stats.iterations = 1; stats.iterations <= prm.max_iterations; ++stats.iterations)
         {
-          throw_if_interrupted("in a contact iteration");
-          std::vector<FaceState> states(n_f);
+          stop_if_interrupted();
+          std::vector<FaceState> states(system.n_faces());
           {
             TimerOutput::Scope t(timer, "Mechanics: contact update");
             clock.restart();
             linearize(u, lambda, c_now, rows, rhs, states);
             stats.time_contact_rows += clock.wall_time();
           }
-          {
-            TimerOutput::Scope t(timer, "Mechanics: factorization and solve");
-            unsigned int       changed = 0;
-            if (!seen_states.empty())
-              for (unsigned int fi = 0; fi < n_f; ++fi)
-                changed += (seen_states.back()[fi] != states[fi]);
-            linear_solver->solve(rows, changed, rhs, delta);
-          }
+          solve_linear_system(rows, states, rhs, delta);
           const double alpha_max = cycle_damping_factor(states, stats.iterations);
           seen_states.push_back(states);
 
@@ -417,18 +491,8 @@ namespace porofrac
             stats.initial_relative_history.push_back(
               g0_norm2 > 0 ? std::sqrt((g.mechanical + g.contact_unscaled) / g0_norm2) : 0.);
           }
-          progress << "    contact iteration " << stats.iterations << ": relative residual "
-                   << std::scientific << std::setprecision(3) << res << std::defaultfloat;
-          if (alpha != 1)
-            progress << ", step " << alpha;
-          if (c_now != prm.c)
-            progress << ", c = " << c_now;
-          progress << std::endl;
-          const ContactLinearSolverStatistics &now = linear_solver->statistics();
-          stats.factorizations                     = now.factorizations - start.factorizations;
-          stats.reused_factorizations = now.reused_factorizations - start.reused_factorizations;
-          stats.time_factorization    = now.time_factorization - start.time_factorization;
-          stats.time_solves           = now.time_solves - start.time_solves;
+          record_linear_statistics(start);
+          report_iteration(res, alpha, c_now);
           if (res <= prm.tolerance && c_now == prm.c)
             {
               stats.converged = true;
@@ -437,7 +501,7 @@ namespace porofrac
           // Continuation: move c towards the target once the face states are those of the
           // previous iterate (the active set has settled for this c).
           if (c_now != prm.c && seen_states.size() > 1 &&
-              seen_states[seen_states.size() - 2] == states)
+              same_states(seen_states[seen_states.size() - 2], states))
             c_now = (c_now < prm.c ? std::min(prm.c, c_now * prm.continuation_factor) :
                                      std::max(prm.c, c_now / prm.continuation_factor));
         }
@@ -449,7 +513,28 @@ namespace porofrac
       throw SolverFailure(s.str());
     }
 
+
+
+    template <int dim, typename System>
+    void
+    ContactSolver<dim, System>::report_iteration(const double res,
+                                                 const double alpha,
+                                                 const double c_now)
+    {
+      progress << "    contact iteration " << stats.iterations << ": relative residual "
+               << std::scientific << std::setprecision(3) << res << std::defaultfloat;
+      if (alpha != 1)
+        progress << ", step " << alpha;
+      if (c_now != prm.c)
+        progress << ", c = " << c_now;
+      if (stats.linear_iterations > 0)
+        progress << ", " << stats.linear_iterations << " linear iterations so far";
+      progress << std::endl;
+    }
+
     template class ContactSolver<2>;
     template class ContactSolver<3>;
+    template class ContactSolver<2, DistributedElasticitySystem<2>>;
+    template class ContactSolver<3, DistributedElasticitySystem<3>>;
   } // namespace mechanics
 } // namespace porofrac

@@ -11,6 +11,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/io/expression.h>
 #include <porofrac/io/text.h>
+#include <porofrac/mechanics/elasticity_assembly.h>
 #include <porofrac/mechanics/elasticity_system.h>
 
 #include <algorithm>
@@ -23,35 +24,6 @@ namespace porofrac
 {
   namespace mechanics
   {
-    namespace
-    {
-      /// Weight of the integrals: 2 pi r in axisymmetric mode (r = second coordinate), else 1.
-      template <int dim>
-      double
-      measure_weight(const bool axisymmetric, const Point<dim> &p)
-      {
-        return axisymmetric ? 2 * numbers::PI * p[1] : 1.;
-      }
-
-      /// A vector function of x, y (, z) with the given component expressions ("0" elsewhere).
-      template <int dim>
-      std::unique_ptr<FunctionParser<dim>>
-      make_vector_function(const std::map<unsigned int, std::string> &expressions,
-                           const std::string                         &parameter)
-      {
-        std::vector<std::string> e(dim, "0");
-        for (const auto &[c, ex] : expressions)
-          e[c] = ex;
-        return io::parse_expressions<dim>(e, parameter);
-      }
-
-      /// Lame coefficients (mu, lambda) of E and nu; in 2D they give plane strain.
-      std::pair<double, double>
-      lame_coefficients(const double E, const double nu)
-      {
-        return {E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))};
-      }
-    } // namespace
 
 
 
@@ -121,7 +93,6 @@ namespace porofrac
     void
     ElasticitySystem<dim>::make_constraints()
     {
-      const std::string pname = "Mechanics/Dirichlet";
       // Vertex-matching tolerance of the point constraints, from the bounding-box diagonal
       // (GridTools::diameter compares all pairs of boundary vertices: quadratic).
       const auto   box = GridTools::compute_bounding_box(mesh.triangulation);
@@ -129,75 +100,13 @@ namespace porofrac
         1e-8 * box.get_boundary_points().first.distance(box.get_boundary_points().second);
       for (AffineConstraints<double> *target : {&constraints, &constraints_hom})
         {
-          const bool homogeneous = (target == &constraints_hom);
           target->clear();
-          for (const auto &[id, comps] : prm.dirichlet)
-            {
-              if (std::find(mesh.outer_boundary_ids.begin(), mesh.outer_boundary_ids.end(), id) ==
-                  mesh.outer_boundary_ids.end())
-                throw InputError(pname,
-                                 "boundary id " + std::to_string(id) +
-                                   " is not an outer boundary of the mesh");
-              std::vector<bool> mask(dim, false);
-              for (const auto &[c, e] : comps)
-                mask[c] = true;
-              auto                         fp = make_vector_function<dim>(comps, pname);
-              Functions::ZeroFunction<dim> zero(dim);
-              VectorTools::interpolate_boundary_values(mesh.mapping(),
-                                                       dof_handler,
-                                                       id,
-                                                       homogeneous ?
-                                                         static_cast<const Function<dim> &>(zero) :
-                                                         *fp,
-                                                       *target,
-                                                       ComponentMask(mask));
-            }
-          // Point constraints (e.g. the symmetry of 5.2.1): every vertex at the point.
-          std::set<types::global_dof_index> point_constrained;
-          for (const PointConstraint &pc : prm.point_constraints)
-            {
-              Point<dim> p;
-              for (unsigned int d = 0; d < dim; ++d)
-                p[d] = pc.point[d];
-              unsigned int                      hits = 0;
-              std::set<types::global_dof_index> own; // a vertex is seen from each of its cells
-              for (const auto &cell : dof_handler.active_cell_iterators())
-                for (const unsigned int v : cell->vertex_indices())
-                  if (cell->vertex(v).distance(p) < tol)
-                    {
-                      ++hits;
-                      for (const auto &[c, e] : pc.values)
-                        {
-                          const auto dof = cell->vertex_dof_index(v, c);
-                          if (!own.insert(dof).second)
-                            continue;
-                          check_input(!point_constrained.count(dof),
-                                      "Mechanics/Point constraints",
-                                      "component " + std::string(1, "xyz"[c]) + " at " +
-                                        io::to_text(p) + " is constrained twice");
-                          if (target->is_constrained(dof))
-                            continue;
-                          target->add_line(dof);
-                          if (!homogeneous)
-                            target->set_inhomogeneity(
-                              dof,
-                              io::parse_expressions<dim>({e}, "Mechanics/Point constraints")
-                                ->value(p));
-                        }
-                    }
-              point_constrained.insert(own.begin(), own.end());
-              if (hits == 0)
-                {
-                  std::ostringstream s;
-                  s << "the point (" << p << ") is not a mesh vertex";
-                  throw InputError("Mechanics/Point constraints", s.str());
-                }
-            }
+          const std::vector<unsigned int> hits = add_displacement_constraints(
+            prm, mesh, dof_handler, tol, target == &constraints_hom, *target);
+          check_displacement_constraints(prm, hits, true);
           target->close();
         }
-      check_input(constraints.n_constraints() > 0,
-                  "Mechanics/Dirichlet",
-                  "no Dirichlet condition or point constraint: the elasticity system is singular");
+      check_displacement_constraints(prm, {}, constraints.n_constraints() > 0);
     }
 
 
@@ -207,10 +116,9 @@ namespace porofrac
     ElasticitySystem<dim>::make_coupling(DynamicSparsityPattern &dsp)
     {
       // Coupling int_sigma lambda . [v] (paper eq. (10)), [v] = v+ - v-.
-      const unsigned int                   n_u = dof_handler.n_dofs();
-      std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-      const QGaussSimplex<dim - 1>         face_quadrature(3);
-      FEFaceValues<dim>                    fe_face(mesh.mapping(),
+      const unsigned int           n_u = dof_handler.n_dofs();
+      const QGaussSimplex<dim - 1> face_quadrature(3);
+      FEFaceValues<dim>            fe_face(mesh.mapping(),
                                 fe,
                                 face_quadrature,
                                 update_values | update_quadrature_points | update_JxW_values);
@@ -225,25 +133,11 @@ namespace porofrac
                                                                         face.cell[side]->level(),
                                                                         face.cell[side]->index(),
                                                                         &dof_handler);
-              fe_face.reinit(cell, face.face_no[side]);
-              cell->get_dof_indices(local);
-              const double sign = (side == geometry::plus ? 1. : -1.);
+              const double sign    = (side == geometry::plus ? 1. : -1.);
+              const double measure = add_side_coupling(
+                prm.axisymmetric, fe, fe_face, cell, face.face_no[side], sign, entries);
               if (side == geometry::plus)
-                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                  face_measures[face.index] +=
-                    measure_weight(prm.axisymmetric, fe_face.quadrature_point(q)) * fe_face.JxW(q);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                {
-                  if (!fe.has_support_on_face(i, face.face_no[side]))
-                    continue;
-                  const unsigned int comp = fe.system_to_component_index(i).first;
-                  double             v    = 0;
-                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                    v += fe_face.shape_value_component(i, q, comp) *
-                         measure_weight(prm.axisymmetric, fe_face.quadrature_point(q)) *
-                         fe_face.JxW(q);
-                  entries[{local[i], comp}] += sign * v;
-                }
+                face_measures[face.index] = measure;
             }
           for (const auto &[key, v] : entries)
             if (std::abs(v) > 1e-14 * face_measures[face.index])
@@ -264,208 +158,13 @@ namespace porofrac
 
 
 
-    /// The fixed loads of the deck as functions (body force, tractions, pressures, pre-stress).
-    template <int dim>
-    struct DeckLoads
-    {
-      DeckLoads(const ContactParameters &prm, const geometry::CutMesh<dim> &mesh)
-      {
-        if (!prm.body_force.empty())
-          {
-            std::map<unsigned int, std::string> m;
-            for (unsigned int d = 0; d < dim; ++d)
-              m[d] = prm.body_force[d];
-            body = make_vector_function<dim>(m, "Mechanics/Body force");
-          }
-        if (!prm.pre_stress.empty())
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = i; j < dim; ++j)
-              sigma0[i][j] = prm.pre_stress[i * dim + j];
-        const auto check_id = [&](const types::boundary_id id, const std::string &parameter) {
-          check_input(std::find(mesh.outer_boundary_ids.begin(),
-                                mesh.outer_boundary_ids.end(),
-                                id) != mesh.outer_boundary_ids.end(),
-                      parameter,
-                      "boundary id " + std::to_string(id) +
-                        " is not an outer boundary of the mesh");
-        };
-        for (const auto &[id, m] : prm.traction)
-          {
-            check_id(id, "Mechanics/Traction");
-            traction[id] = make_vector_function<dim>(m, "Mechanics/Traction");
-          }
-        for (const auto &[id, e] : prm.pressure)
-          {
-            check_id(id, "Mechanics/Normal pressure");
-            pressure[id] = io::parse_expressions<dim>({e}, "Mechanics/Normal pressure");
-          }
-        const std::string fp = "Mechanics/Fracture pressure";
-        for (const auto &[id, e] : prm.fracture_pressure)
-          check_input(id == numbers::invalid_unsigned_int ||
-                        std::count(mesh.fracture_ids.begin(), mesh.fracture_ids.end(), id) > 0,
-                      fp,
-                      "fracture id " + std::to_string(id) + " is not a fracture of the mesh");
-        for (const unsigned int id : mesh.fracture_ids)
-          {
-            auto it = prm.fracture_pressure.find(id);
-            if (it == prm.fracture_pressure.end())
-              it = prm.fracture_pressure.find(numbers::invalid_unsigned_int);
-            if (it != prm.fracture_pressure.end())
-              fracture_pressure[id] = io::parse_expressions<dim>({it->second}, fp);
-          }
-      }
-
-      std::unique_ptr<FunctionParser<dim>>                               body;
-      SymmetricTensor<2, dim>                                            sigma0;
-      std::map<types::boundary_id, std::unique_ptr<FunctionParser<dim>>> traction, pressure;
-      /// Fluid pressure in the fractures by fracture id (none: no pressure).
-      std::map<unsigned int, std::unique_ptr<FunctionParser<dim>>> fracture_pressure;
-    };
-
-
-
-    /// Per-cell work arrays and the cell's contributions (matrix, loads, int_K div phi_i).
-    template <int dim>
-    struct ElasticitySystem<dim>::CellScratch
-    {
-      CellScratch(const geometry::CutMesh<dim> &mesh, const FESystem<dim> &fe)
-          : quadrature(3)
-          , face_quadrature(3)
-          , fe_values(mesh.mapping(),
-                      fe,
-                      quadrature,
-                      update_values | update_gradients | update_quadrature_points |
-                        update_JxW_values)
-          , fe_face(mesh.mapping(),
-                    fe,
-                    face_quadrature,
-                    update_values | update_quadrature_points | update_normal_vectors |
-                      update_JxW_values)
-          , matrix(fe.n_dofs_per_cell(), fe.n_dofs_per_cell())
-          , rhs(fe.n_dofs_per_cell())
-          , div_integral(fe.n_dofs_per_cell())
-          , local(fe.n_dofs_per_cell())
-          , eps(fe.n_dofs_per_cell())
-          , eps_hoop(fe.n_dofs_per_cell())
-          , div(fe.n_dofs_per_cell())
-          , value(dim)
-      {
-      }
-
-      const QGaussSimplex<dim>             quadrature;
-      const QGaussSimplex<dim - 1>         face_quadrature;
-      FEValues<dim>                        fe_values;
-      FEFaceValues<dim>                    fe_face;
-      FullMatrix<double>                   matrix;
-      Vector<double>                       rhs, div_integral;
-      std::vector<types::global_dof_index> local;
-      std::vector<SymmetricTensor<2, dim>> eps;
-      std::vector<double>                  eps_hoop, div;
-      Vector<double>                       value;
-    };
-
-
-
-    template <int dim>
-    void
-    ElasticitySystem<dim>::assemble_cell_volume(const active_cell_iterator &cell,
-                                                const DeckLoads<dim>       &loads,
-                                                CellScratch                &scratch)
-    {
-      // Hooke's law (plane strain in 2D).
-      const auto [mu, lam] = lame_coefficients(prm.young_modulus, prm.poisson_ratio);
-      const FEValuesExtractors::Vector disp(0);
-      const bool                       axi       = prm.axisymmetric;
-      const unsigned int               n         = fe.n_dofs_per_cell();
-      auto                            &fe_values = scratch.fe_values;
-      auto &eps = scratch.eps, &eps_hoop = scratch.eps_hoop, &div = scratch.div;
-      fe_values.reinit(cell);
-      for (unsigned int q = 0; q < scratch.quadrature.size(); ++q)
-        {
-          const Point<dim> &x = fe_values.quadrature_point(q);
-          // Axisymmetric: integrals over the ring, weight 2 pi r; the strain gains the hoop
-          // component u_r / r (r = x[1], radial component 1).
-          const double JxW = measure_weight(axi, x) * fe_values.JxW(q);
-          cell_measures[cell->active_cell_index()] += JxW;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              eps[i]      = fe_values[disp].symmetric_gradient(i, q);
-              eps_hoop[i] = (axi && fe.system_to_component_index(i).first == 1) ?
-                              fe_values.shape_value(i, q) / x[1] :
-                              0.;
-              div[i]      = trace(eps[i]) + eps_hoop[i];
-            }
-          if (loads.body)
-            loads.body->vector_value(x, scratch.value);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const SymmetricTensor<2, dim> s_i =
-                2 * mu * eps[i] + lam * div[i] * unit_symmetric_tensor<dim>();
-              const double s_i_hoop = 2 * mu * eps_hoop[i] + lam * div[i];
-              for (unsigned int j = 0; j < n; ++j)
-                scratch.matrix(i, j) += (s_i * eps[j] + s_i_hoop * eps_hoop[j]) * JxW;
-              double r = -(loads.sigma0 * eps[i]) - prm.pre_stress_hoop * eps_hoop[i];
-              if (loads.body)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  r += scratch.value[c] * fe_values.shape_value(i, q);
-                }
-              scratch.rhs(i) += r * JxW;
-              scratch.div_integral(i) += div[i] * JxW;
-            }
-        }
-    }
-
-
-
-    template <int dim>
-    void
-    ElasticitySystem<dim>::assemble_cell_boundary(const active_cell_iterator &cell,
-                                                  const DeckLoads<dim>       &loads,
-                                                  CellScratch                &scratch)
-    {
-      for (const unsigned int fn : cell->face_indices())
-        {
-          if (!cell->face(fn)->at_boundary())
-            continue;
-          const auto id = cell->face(fn)->boundary_id();
-          const auto tr = loads.traction.find(id);
-          const auto pr = loads.pressure.find(id);
-          if (tr == loads.traction.end() && pr == loads.pressure.end())
-            continue;
-          auto &fe_face = scratch.fe_face;
-          fe_face.reinit(cell, fn);
-          for (unsigned int q = 0; q < scratch.face_quadrature.size(); ++q)
-            {
-              const Point<dim> &x   = fe_face.quadrature_point(q);
-              const double      JxW = measure_weight(prm.axisymmetric, x) * fe_face.JxW(q);
-              Tensor<1, dim>    t;
-              if (tr != loads.traction.end())
-                {
-                  tr->second->vector_value(x, scratch.value);
-                  for (unsigned int d = 0; d < dim; ++d)
-                    t[d] += scratch.value[d];
-                }
-              if (pr != loads.pressure.end())
-                t -= pr->second->value(x) * fe_face.normal_vector(q);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  scratch.rhs(i) += t[c] * fe_face.shape_value(i, q) * JxW;
-                }
-            }
-        }
-    }
-
-
-
     template <int dim>
     void
     ElasticitySystem<dim>::assemble()
     {
       TimerOutput::Scope   t(timer, "Mechanics: assembly");
       const DeckLoads<dim> loads(prm, mesh);
-      CellScratch          scratch(mesh, fe);
+      CellScratch<dim>     scratch(mesh.mapping(), fe);
       K_full      = 0;
       base_matrix = 0;
       f           = 0;
@@ -473,11 +172,10 @@ namespace porofrac
       cell_measures.assign(mesh.triangulation.n_active_cells(), 0.);
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
-          scratch.matrix       = 0;
-          scratch.rhs          = 0;
-          scratch.div_integral = 0;
-          assemble_cell_volume(cell, loads, scratch);
-          assemble_cell_boundary(cell, loads, scratch);
+          scratch.clear();
+          assemble_cell_volume(prm, fe, cell, loads, scratch);
+          assemble_cell_boundary(prm, fe, cell, loads, scratch);
+          cell_measures[cell->active_cell_index()] = scratch.cell_measure;
           cell->get_dof_indices(scratch.local);
           K_full.add(scratch.local, scratch.matrix);
           for (unsigned int i = 0; i < scratch.local.size(); ++i)
@@ -535,20 +233,7 @@ namespace porofrac
     Tensor<2, dim>
     ElasticitySystem<dim>::frame(const unsigned int fi) const
     {
-      const auto    &face = mesh.fracture_faces[fi];
-      Tensor<2, dim> R;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          R[0][d] = face.normal[d];
-          R[1][d] = face.tangent[d];
-        }
-      if constexpr (dim == 3)
-        {
-          const Tensor<1, 3> t2 = cross_product_3d(face.normal, face.tangent);
-          for (unsigned int d = 0; d < 3; ++d)
-            R[2][d] = t2[d];
-        }
-      return R;
+      return face_frame(mesh.fracture_faces[fi]);
     }
 
 
@@ -697,6 +382,78 @@ namespace porofrac
           for (unsigned int j = i; j < dim; ++j)
             s[i][j] += prm.pre_stress[i * dim + j];
       return s;
+    }
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::face_jumps(const Vector<double>        &u,
+                                      std::vector<Tensor<1, dim>> &jumps) const
+    {
+      jumps.resize(coupling.size());
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        jumps[fi] = jump(u, fi);
+    }
+
+
+
+    template <int dim>
+    std::pair<double, double>
+    ElasticitySystem<dim>::mechanical_residual_norms(const Vector<double> &u,
+                                                     const Vector<double> &lambda) const
+    {
+      // f - K u - B^T lambda on unconstrained dofs.
+      Vector<double> r;
+      apply_elasticity(u, r);
+      r.sadd(-1., f);
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        for (const auto &e : coupling[fi])
+          r(e.dof) -= e.value * lambda(dim * fi + e.component);
+      double mechanical = 0, load = 0;
+      for (unsigned int i = 0; i < r.size(); ++i)
+        if (!constraints.is_constrained(i))
+          {
+            mechanical += r(i) * r(i);
+            load += f(i) * f(i);
+          }
+      return {mechanical, load};
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::mechanical_rhs(const Vector<double> &u,
+                                          const Vector<double> &lambda,
+                                          Vector<double>       &rhs) const
+    {
+      const unsigned int n_u = dof_handler.n_dofs();
+      Vector<double>     r;
+      apply_elasticity(u, r);
+      for (unsigned int i = 0; i < n_u; ++i)
+        rhs(i) = constraints_hom.is_constrained(i) ? 0. : f(i) - r(i);
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        for (const auto &e : coupling[fi])
+          if (!constraints_hom.is_constrained(e.dof))
+            rhs(e.dof) -= e.value * lambda(dim * fi + e.component);
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::set_step(const Vector<double> &u_old,
+                                    const Vector<double> &lambda_old,
+                                    const Vector<double> &delta,
+                                    const double          alpha,
+                                    Vector<double>       &u,
+                                    Vector<double>       &lambda) const
+    {
+      const unsigned int n_u = u.size();
+      for (unsigned int i = 0; i < n_u; ++i)
+        u(i) = u_old(i) + alpha * delta(i);
+      for (unsigned int i = 0; i < lambda.size(); ++i)
+        lambda(i) = lambda_old(i) + alpha * delta(n_u + i);
     }
 
     template class ElasticitySystem<2>;

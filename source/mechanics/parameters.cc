@@ -5,6 +5,7 @@
 #include <porofrac/io/text.h>
 #include <porofrac/mechanics/contact_linear_solver.h>
 #include <porofrac/mechanics/contact_method.h>
+#include <porofrac/mechanics/distributed_contact_linear_solver.h>
 #include <porofrac/mechanics/parameters.h>
 
 #include <cmath>
@@ -155,6 +156,29 @@ namespace porofrac
                         Patterns::Selection(ContactLinearSolverRegistry<2>::instance().selection()),
                         "Linear solves of the contact iterations. " +
                           ContactLinearSolverRegistry<2>::instance().documentation());
+      prm.declare_entry(
+        "Distributed linear solver",
+        "direct",
+        Patterns::Selection(DistributedContactLinearSolverRegistry<2>::instance().selection()),
+        "Linear solves of the contact iterations in distributed runs (more than one MPI "
+        "process, doc/parallel.md). " +
+          DistributedContactLinearSolverRegistry<2>::instance().documentation());
+      prm.declare_entry("Linear solver tolerance",
+                        "1e-2",
+                        Patterns::Double(),
+                        "Iterative linear solvers: the relative residual of each Newton step is "
+                        "min(this, Linear solver forcing x the relative residual of the last "
+                        "contact iterate) (inexact steps).");
+      prm.declare_entry("Linear solver forcing",
+                        "0.1",
+                        Patterns::Double(),
+                        "Iterative linear solvers: see Linear solver tolerance.");
+      prm.declare_entry("Max linear iterations",
+                        "200",
+                        Patterns::Integer(1),
+                        "Iterative linear solvers: Krylov iterations per solve before the step "
+                        "is solved by the direct solver instead (counted in summary.json, "
+                        "mechanics/linear_direct_fallbacks).");
       prm.declare_entry("Report linear solve time",
                         "false",
                         Patterns::Bool(),
@@ -282,6 +306,10 @@ namespace porofrac
       continuation_factor              = prm.get_double(p, "Continuation factor");
       linear_solver                    = prm.get(p, "Linear solver");
       reuse_iterations                 = prm.get_integer(p, "Reuse factorization iterations");
+      distributed_linear_solver        = prm.get(p, "Distributed linear solver");
+      linear_tolerance                 = prm.get_double(p, "Linear solver tolerance");
+      linear_forcing                   = prm.get_double(p, "Linear solver forcing");
+      max_linear_iterations            = prm.get_integer(p, "Max linear iterations");
 
       dirichlet = parse_component_map(prm.get(p, "Dirichlet"), dim, "Mechanics/Dirichlet");
       traction  = parse_component_map(prm.get(p, "Traction"), dim, "Mechanics/Traction");
@@ -371,6 +399,17 @@ namespace porofrac
                   "Mechanics/Linear solver",
                   "'" + linear_solver + "' is not one of " +
                     ContactLinearSolverRegistry<2>::instance().selection());
+      check_input(DistributedContactLinearSolverRegistry<2>::instance().has(
+                    distributed_linear_solver),
+                  "Mechanics/Distributed linear solver",
+                  "'" + distributed_linear_solver + "' is not one of " +
+                    DistributedContactLinearSolverRegistry<2>::instance().selection());
+      check_input(linear_tolerance > 0 && linear_tolerance < 1,
+                  "Mechanics/Linear solver tolerance",
+                  "must be in (0, 1)");
+      check_input(linear_forcing > 0 && linear_forcing < 1,
+                  "Mechanics/Linear solver forcing",
+                  "must be in (0, 1)");
       check_input(FrictionLawRegistry::instance().has(friction_law_name),
                   "Mechanics/Friction law",
                   "'" + friction_law_name + "' is not one of " +

@@ -6,6 +6,7 @@
 // uninterrupted one, and the same summary totals. Then the coupled run gets a SIGINT while it
 // prints step 5: it stops after that step with the Interrupted exception, "status":
 // "interrupted" and a checkpoint, from which a restart again ends as the uninterrupted run.
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <porofrac/app/parameters.h>
@@ -124,8 +125,10 @@ namespace
 } // namespace
 
 int
-main()
+main(int argc, char **argv)
 {
+  // run_scene is collective over MPI_COMM_WORLD (one process here).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   check_resume("two-phase flow",
                "../flow/fractured_square_drainage_short.prm",
                "flow",

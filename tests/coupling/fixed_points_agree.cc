@@ -6,6 +6,7 @@
 // of the coupling tolerance. Printed: the largest difference of [u]_n relative to max |[u]_n|
 // and of lambda_n relative to max |lambda_n| between each pair of methods (asserted < 1e-4),
 // and whether the final face states coincide.
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <porofrac/app/parameters.h>
@@ -95,12 +96,14 @@ namespace
 } // namespace
 
 int
-main()
+main(int argc, char **argv)
 {
-  const auto nk_p    = run("newton-krylov", "equivalent pressure");
-  const auto plain_p = run("fixed point", "equivalent pressure");
-  const auto nk_u    = run("newton-krylov", "displacement");
-  const auto and_p   = run("anderson", "equivalent pressure");
+  // run_scene is collective over MPI_COMM_WORLD (one process here).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto                               nk_p    = run("newton-krylov", "equivalent pressure");
+  const auto                               plain_p = run("fixed point", "equivalent pressure");
+  const auto                               nk_u    = run("newton-krylov", "displacement");
+  const auto                               and_p   = run("anderson", "equivalent pressure");
   const auto and_p_x = run("anderson", "equivalent pressure", /*extrapolate=*/true);
   compare("Newton-Krylov vs plain, p_E", nk_p, plain_p);
   compare("Newton-Krylov on p_E vs on u", nk_p, nk_u);

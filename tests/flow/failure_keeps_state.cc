@@ -4,6 +4,7 @@
 // after 2 cuts (it needs 9 iterations at dt = 10 s). Checked: a SolverFailure naming the time and
 // the cuts, summary.json with "status": "failed" and the reason, an empty history.csv (no
 // accepted step), and flow.pvd listing the one field file of the last accepted state, t = 0.
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <porofrac/app/parameters.h>
@@ -45,9 +46,11 @@ namespace
 } // namespace
 
 int
-main()
+main(int argc, char **argv)
 {
-  dealii::ParameterHandler prm;
+  // run_scene is collective over MPI_COMM_WORLD (one process here).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  dealii::ParameterHandler                 prm;
   porofrac::app::declare_all_parameters(prm);
   porofrac::io::Deck deck(prm);
   const std::string  path =

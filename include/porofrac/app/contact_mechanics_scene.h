@@ -4,6 +4,7 @@
 
 #include <porofrac/app/postprocess/postprocessor.h>
 #include <porofrac/geometry/cut_mesh.h>
+#include <porofrac/geometry/distributed_cut_mesh.h>
 #include <porofrac/io/run_context.h>
 
 namespace porofrac
@@ -20,6 +21,19 @@ namespace porofrac
     run_contact_mechanics_scene(const PhysicsParameters      &parameters,
                                 const geometry::CutMesh<dim> &mesh,
                                 io::RunContext               &context);
+
+    /**
+     * The same on a distributed mesh (every process of context.communicator calls it): the
+     * solve is distributed; the report, summary.json, fractures.csv and the fracture VTU come
+     * from rank 0 (face values gathered there), the displacement is written as one VTU piece per
+     * process with a .pvtu record. Postprocessors run on rank 0 on a serial ContactProblem that
+     * holds the gathered state (doc/parallel.md).
+     */
+    template <int dim>
+    void
+    run_contact_mechanics_scene(const PhysicsParameters                 &parameters,
+                                const geometry::DistributedCutMesh<dim> &mesh,
+                                io::RunContext                          &context);
   } // namespace app
 } // namespace porofrac
 

@@ -14,9 +14,9 @@ namespace porofrac
      * (refusing a directory that a running porofrac process holds; a lock left by a process that
      * no longer runs is taken over) and removes the files a previous run left there under the
      * names porofrac writes (summary.json, history.csv, fractures.csv, fracture_p2.csv, mesh*,
-     * fractures.*, displacement.*, flow*, poromechanics*, checkpoint.bin), so that the directory
-     * never mixes the outputs of two runs. Other files are left alone. The destructor releases the
-     * lock.
+     * fractures.*, displacement.* and its pieces displacement_NNNN.*, flow*, poromechanics*,
+     * checkpoint.bin), so that the directory never mixes the outputs of two runs. Other files are
+     * left alone. The destructor releases the lock.
      */
     class OutputDirectory
     {

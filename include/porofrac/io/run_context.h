@@ -3,6 +3,7 @@
 #define POROFRAC_IO_RUN_CONTEXT_H
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <porofrac/io/json.h>
@@ -48,6 +49,9 @@ namespace porofrac
       /// "vtu", "vtk" or "none" (Output/Format).
       std::string output_format;
       RunOptions  options;
+      /// The processes that run the scene together: MPI_COMM_SELF unless the scene is
+      /// distributed (then `report`, `progress` and the files of the run are rank 0's).
+      MPI_Comm communicator = MPI_COMM_SELF;
 
       /// output_directory + "/" + @p file.
       std::string

@@ -24,8 +24,11 @@ namespace porofrac
       unsigned int factorizations = 0;
       /// Solves done by GMRES preconditioned by older factors instead of a factorization.
       unsigned int reused_factorizations = 0;
-      double       time_factorization    = 0;
-      double       time_solves           = 0;
+      /// Krylov iterations of iterative solvers, and their steps solved directly instead.
+      unsigned int linear_iterations  = 0;
+      unsigned int direct_fallbacks   = 0;
+      double       time_factorization = 0;
+      double       time_solves        = 0;
       /// Set-up that depends on the mesh only (Cholesky of K and W for the Schur complement).
       double time_cholesky = 0, time_form_W = 0;
     };
@@ -38,13 +41,17 @@ namespace porofrac
      * keep what they can (factorizations, Schur complements) while rows do not change.
      *
      * Implementations register with ContactLinearSolverRegistry (deck entry
-     * Mechanics/Linear solver, the name is the deck's value). This interface is where iterative
-     * and distributed solvers plug in: they receive the same system and rows.
+     * Mechanics/Linear solver, the name is the deck's value) for the serial ElasticitySystem,
+     * and with DistributedContactLinearSolverRegistry (Mechanics/Distributed linear solver)
+     * for the DistributedElasticitySystem: they receive the same rows, and vectors of the
+     * system's VectorType.
      */
-    template <int dim>
+    template <int dim, typename System = ElasticitySystem<dim>>
     class ContactLinearSolver
     {
     public:
+      using VectorType = typename System::VectorType;
+
       virtual ~ContactLinearSolver() = default;
 
       /**
@@ -53,10 +60,17 @@ namespace porofrac
        * (a hint for solvers that update old factors). Throws SolverFailure if it cannot.
        */
       virtual void
-      solve(const FaceRows<dim>  &rows,
-            const unsigned int    n_changed_faces,
-            const Vector<double> &rhs,
-            Vector<double>       &x) = 0;
+      solve(const FaceRows<dim> &rows,
+            const unsigned int   n_changed_faces,
+            const VectorType    &rhs,
+            VectorType          &x) = 0;
+
+      /// Iterative solvers: the relative residual the next solves must reach (inexact Newton
+      /// steps); direct solvers ignore it.
+      virtual void
+      set_tolerance(const double)
+      {
+      }
 
       /// Forgets everything that depends on face rows (the next solve refactorizes).
       virtual void
@@ -76,9 +90,9 @@ namespace porofrac
       ContactLinearSolverStatistics stats;
     };
 
-    template <int dim>
-    using ContactLinearSolverRegistry = Registry<ContactLinearSolver<dim>,
-                                                 const ElasticitySystem<dim> &,
+    template <int dim, typename System = ElasticitySystem<dim>>
+    using ContactLinearSolverRegistry = Registry<ContactLinearSolver<dim, System>,
+                                                 const System &,
                                                  const ContactParameters &,
                                                  ConditionalOStream &,
                                                  TimerOutput &>;

@@ -48,6 +48,19 @@ namespace porofrac
     ContactFaceValues<dim>
     contact_face_values(const ContactProblem<dim> &problem, const unsigned int f);
 
+    /// The contact values of every fracture face, in index order.
+    template <int dim>
+    std::vector<ContactFaceValues<dim>>
+    contact_face_values(const ContactProblem<dim> &problem);
+
+    /// Face-state counts of @p values (of the faces of fracture @p fracture_id of @p mesh, or
+    /// of all faces with -1).
+    template <int dim>
+    FaceStateCounts
+    count_states(const geometry::CutMesh<dim>              &mesh,
+                 const std::vector<ContactFaceValues<dim>> &values,
+                 const int                                  fracture_id = -1);
+
     /**
      * Appends the contact fields of every fracture face to @p fields (the fracture VTU of every
      * physics): jump_n, jump_t, lambda_n, lambda_t, state (0 open, 1 stick, 2 slip) and
@@ -57,6 +70,12 @@ namespace porofrac
     template <int dim>
     void
     append_contact_fields(const ContactProblem<dim> &problem, geometry::FractureFields &fields);
+
+    /// The same from the values of every face.
+    template <int dim>
+    void
+    append_contact_fields(const std::vector<ContactFaceValues<dim>> &values,
+                          geometry::FractureFields                  &fields);
 
     /**
      * Header of fractures.csv: fracture_id, face_id, s, x, y[, z], jump_n, jump_t[, jump_t1,
@@ -74,6 +93,15 @@ namespace porofrac
                               const ContactProblem<dim> &problem,
                               const std::vector<double> *aperture = nullptr,
                               const double              *time     = nullptr);
+
+    /// The same from the values of every face of @p mesh.
+    template <int dim>
+    void
+    write_fracture_table_rows(std::ostream                              &out,
+                              const geometry::CutMesh<dim>              &mesh,
+                              const std::vector<ContactFaceValues<dim>> &values,
+                              const std::vector<double>                 *aperture = nullptr,
+                              const double                              *time     = nullptr);
 
     /// Writes the P2 displacement (patches of degree 2) to @p filename in @p format (vtu, vtk).
     template <int dim>

@@ -125,12 +125,12 @@ namespace porofrac
       double
       friction(const unsigned int f) const
       {
-        return solver.friction(u, f);
+        return solver.friction(jump(f), f);
       }
       FaceState
       state(const unsigned int f) const
       {
-        return solver.state(u, lambda, f);
+        return solver.state(jump(f), multiplier(f), f);
       }
 
       /// Per active cell: the mean of div u over the cell (weighted in axisymmetric mode).

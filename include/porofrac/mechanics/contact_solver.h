@@ -39,6 +39,9 @@ namespace porofrac
       unsigned int        cycles_detected = 0;
       /// Factorizations of this solve, and solves done by GMRES on older factors.
       unsigned int factorizations = 0, reused_factorizations = 0;
+      /// Krylov iterations of an iterative linear solver over this solve, and its steps solved
+      /// directly because GMRES did not converge.
+      unsigned int linear_iterations = 0, direct_fallbacks = 0;
       /// Time in computing the face rows, factorizing, triangular solves, and residual and
       /// line-search evaluations; set-up of the Schur complement (first solve only).
       double time_contact_rows = 0, time_factorization = 0, time_solves = 0, time_residuals = 0,
@@ -55,16 +58,23 @@ namespace porofrac
      * - damping of steps that revisit the face states of an earlier, non-consecutive iterate;
      * - continuation in c (the complementarity functions have the same zeros for every c > 0).
      * Stops when the relative residual is below the tolerance at the target c.
+     *
+     * @p System is the serial ElasticitySystem or the DistributedElasticitySystem (the
+     * interface is described with ElasticitySystem). With more than one process, each
+     * computes the rows of the faces it owns; norms are summed and face-state comparisons voted
+     * over all processes, so that every process takes the same steps.
      */
-    template <int dim>
+    template <int dim, typename System = ElasticitySystem<dim>>
     class ContactSolver
     {
     public:
-      ContactSolver(const ElasticitySystem<dim> &system,
-                    const FrictionField<dim>    &friction,
-                    const ContactParameters     &parameters,
-                    ConditionalOStream          &progress,
-                    TimerOutput                 &timer);
+      using VectorType = typename System::VectorType;
+
+      ContactSolver(const System             &system,
+                    const FrictionField<dim> &friction,
+                    const ContactParameters  &parameters,
+                    ConditionalOStream       &progress,
+                    TimerOutput              &timer);
 
       /**
        * Iterates from (u, lambda), or from the deck's initial guess when @p cold_start, until
@@ -74,7 +84,7 @@ namespace porofrac
        * set it costs one solve with the stored factorization.
        */
       const ContactStatistics &
-      solve(Vector<double> &u, Vector<double> &lambda, const bool cold_start);
+      solve(VectorType &u, VectorType &lambda, const bool cold_start);
 
       /// Forgets what depends on face rows (the next solve refactorizes); keeps what depends
       /// on the mesh only (K, its Cholesky factors, W).
@@ -92,12 +102,13 @@ namespace porofrac
       void
       clear();
 
-      /// Face state of face @p f at (u, lambda) with the target c.
+      /// Face state of face @p f with jump @p jump and multiplier @p lambda (global frame) with
+      /// the target c.
       FaceState
-      state(const Vector<double> &u, const Vector<double> &lambda, const unsigned int f) const;
-      /// Current friction coefficient of face @p f at (u, lambda).
+      state(const Tensor<1, dim> &jump, const Tensor<1, dim> &lambda, const unsigned int f) const;
+      /// Current friction coefficient of face @p f at jump @p jump (global frame).
       double
-      friction(const Vector<double> &u, const unsigned int f) const;
+      friction(const Tensor<1, dim> &jump, const unsigned int f) const;
 
       /// Statistics of the last solve (also after a SolverFailure).
       const ContactStatistics &
@@ -114,6 +125,8 @@ namespace porofrac
       linear_solver_statistics() const;
 
     private:
+      using LinearSolver = ContactLinearSolver<dim, System>;
+
       /// Squared, |sigma|-weighted norms at (u, lambda) with parameter c: scaled complementarity
       /// residual (25)-(26), multipliers, c [u]; mechanical residual and load.
       struct ResidualParts
@@ -126,7 +139,7 @@ namespace porofrac
         double stick_slip = 0, jump = 0, measure = 0, u_max = 0;
       };
       ResidualParts
-      residual_parts(const Vector<double> &u, const Vector<double> &lambda, const double c) const;
+      residual_parts(const VectorType &u, const VectorType &lambda, const double c) const;
       /// Line-search merit: relative contact and mechanical residuals, multiplier scale given.
       static double
       merit(const ResidualParts &r, const double scale2);
@@ -134,54 +147,79 @@ namespace porofrac
       /// at the target c (doc/algorithms.md §1.3): |c [u]| scales C when lambda is zero or
       /// round-off against it.
       double
-      relative_residual(const Vector<double> &u, const Vector<double> &lambda) const;
+      relative_residual(const VectorType &u, const VectorType &lambda) const;
       /// Multiplier and jump of a face in its local frame (the tangential jump counted from
-      /// the previous jumps, if set), and its slip |[u]_tau| (total).
+      /// the previous jumps, if set), and its slip |[u]_tau| (total), from the face-mean jump
+      /// @p jump and the multiplier @p lambda in the global frame.
       struct FaceValues
       {
         Tensor<1, dim> lambda, jump;
         double         slip = 0;
       };
       FaceValues
-      local_values(const Vector<double> &u,
-                   const Vector<double> &lambda,
+      local_values(const Tensor<1, dim> &jump,
+                   const Tensor<1, dim> &lambda,
                    const unsigned int    f) const;
+      /// The multiplier of face @p f (an owned face).
+      Tensor<1, dim>
+      face_multiplier(const VectorType &lambda, const unsigned int f) const;
+      /// The same value on every process: whether @p a and @p b agree on every face.
+      bool
+      same_states(const std::vector<FaceState> &a, const std::vector<FaceState> &b) const;
       /// The local law of face @p f at slip @p slip with parameter @p c.
       LocalContactLaw<dim>
       local_law(const unsigned int f, const double slip, const double c) const;
 
       void
-      set_initial_guess(Vector<double> &u, Vector<double> &lambda) const;
+      set_initial_guess(VectorType &u, VectorType &lambda) const;
       /// Right-hand side (mechanical residual, face residuals) and face rows at (u, lambda).
       void
-      linearize(const Vector<double>   &u,
-                const Vector<double>   &lambda,
+      linearize(const VectorType       &u,
+                const VectorType       &lambda,
                 const double            c,
                 FaceRows<dim>          &rows,
-                Vector<double>         &rhs,
+                VectorType             &rhs,
                 std::vector<FaceState> &states) const;
       /// The step factor of the cycling safeguard for face states @p states.
       double
       cycle_damping_factor(const std::vector<FaceState> &states, const unsigned int iteration);
       /// Chooses the step length along @p delta from (u_old, lambda_old) and sets (u, lambda).
       double
-      take_step(const Vector<double> &u_old,
-                const Vector<double> &lambda_old,
-                const Vector<double> &delta,
-                const double          alpha_max,
-                const double          c,
-                Vector<double>       &u,
-                Vector<double>       &lambda);
+      take_step(const VectorType &u_old,
+                const VectorType &lambda_old,
+                const VectorType &delta,
+                const double      alpha_max,
+                const double      c,
+                VectorType       &u,
+                VectorType       &lambda);
+      /// Stops the iterations (Interrupted, on every process) if any process got a signal.
+      void
+      stop_if_interrupted() const;
+      /// Resets the statistics of a solve; creates the method and the linear solver if needed.
+      void
+      prepare();
+      /// The Newton step: J delta = rhs to the tolerance the last residual asks for.
+      void
+      solve_linear_system(const FaceRows<dim>          &rows,
+                          const std::vector<FaceState> &states,
+                          const VectorType             &rhs,
+                          VectorType                   &delta);
+      /// Linear-solver counts and times of this solve since @p start.
+      void
+      record_linear_statistics(const ContactLinearSolverStatistics &start);
+      /// One progress line per iteration.
+      void
+      report_iteration(const double residual, const double alpha, const double c_now);
 
-      const ElasticitySystem<dim> &system;
-      const FrictionField<dim>    &friction_field;
-      const ContactParameters     &prm;
-      ConditionalOStream          &progress;
-      TimerOutput                 &timer;
+      const System             &system;
+      const FrictionField<dim> &friction_field;
+      const ContactParameters  &prm;
+      ConditionalOStream       &progress;
+      TimerOutput              &timer;
 
-      std::unique_ptr<ContactMethod<dim>>       method;
-      std::string                               method_name;
-      std::unique_ptr<ContactLinearSolver<dim>> linear_solver;
+      std::unique_ptr<ContactMethod<dim>> method;
+      std::string                         method_name;
+      std::unique_ptr<LinearSolver>       linear_solver;
 
       /// State of the current solve: its statistics, the face states of every iterate (for
       /// the cycling safeguard) and whether the line search has been switched on.

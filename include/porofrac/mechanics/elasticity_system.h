@@ -38,6 +38,18 @@ namespace porofrac
     struct DeckLoads;
 
     /**
+     * What the contact iterations (ContactSolver) need from a system, serial or distributed:
+     * - VectorType: displacements, multipliers (dim per fracture face) and the (u, lambda)
+     *   steps, whose multiplier entries have the indices multiplier_index(f, i);
+     * - face data: owns_face (the faces whose rows this process computes), frame, face_measure,
+     *   face_jumps;
+     * - the mechanical residual f - K u - B^T lambda (mechanical_residual_norms,
+     *   mechanical_rhs), the initial guess and the step update (set_step);
+     * - sums and votes over the processes (sum_over_processes, all_processes), so that every
+     *   process takes the same decisions.
+     * ElasticitySystem is the serial model; DistributedElasticitySystem the distributed one.
+     */
+    /**
      * The linear part of the contact problem of paper eqs. (10)-(11b) on a cut mesh: P2
      * displacements (plane strain in 2D, axisymmetric on a radial section, 3D), one multiplier
      * lambda_sigma in R^dim per fracture face, and
@@ -185,25 +197,83 @@ namespace porofrac
              const typename DoFHandler<dim>::active_cell_iterator &cell,
              const Point<dim>                                     &unit_point) const;
 
+
+      /// @name The interface of the contact iterations (see FaceRows above)
+      /// @{
+      using VectorType = Vector<double>;
+      /// The deck entry that chooses the linear solver (ContactLinearSolverRegistry<dim>).
+      static constexpr const char *linear_solver_parameter = "Mechanics/Linear solver";
+      static std::string
+      linear_solver_name(const ContactParameters &prm)
+      {
+        return prm.linear_solver;
+      }
+      unsigned int
+      n_faces() const
+      {
+        return coupling.size();
+      }
+      /// Every face is this process's.
+      bool
+      owns_face(const unsigned int) const
+      {
+        return true;
+      }
+      /// Face-mean jumps of every face.
+      void
+      face_jumps(const Vector<double> &u, std::vector<Tensor<1, dim>> &jumps) const;
+      /// Squared norms of f - K u - B^T lambda and of f over the unconstrained dofs.
+      std::pair<double, double>
+      mechanical_residual_norms(const Vector<double> &u, const Vector<double> &lambda) const;
+      /// The displacement rows of a (u, lambda) step vector: f - K u - B^T lambda, zero on
+      /// constrained dofs.
+      void
+      mechanical_rhs(const Vector<double> &u,
+                     const Vector<double> &lambda,
+                     Vector<double>       &rhs) const;
+      /// Index of multiplier component @p i of face @p f in a (u, lambda) step vector.
+      types::global_dof_index
+      multiplier_index(const unsigned int f, const unsigned int i) const
+      {
+        return dof_handler.n_dofs() + dim * f + i;
+      }
+      void
+      reinit_multipliers(Vector<double> &lambda) const
+      {
+        lambda.reinit(dim * coupling.size());
+      }
+      void
+      reinit_step(Vector<double> &x) const
+      {
+        x.reinit(n_dofs());
+      }
+      /// (u, lambda) = (u_old, lambda_old) + alpha delta.
+      void
+      set_step(const Vector<double> &u_old,
+               const Vector<double> &lambda_old,
+               const Vector<double> &delta,
+               const double          alpha,
+               Vector<double>       &u,
+               Vector<double>       &lambda) const;
+      /// One process: sums and votes are the values themselves.
+      void
+      sum_over_processes(std::vector<double> &) const
+      {
+      }
+      bool
+      all_processes(const bool value) const
+      {
+        return value;
+      }
+      /// @}
+
     private:
       void
       make_constraints();
       void
       make_coupling(DynamicSparsityPattern &dsp);
-      using active_cell_iterator = typename DoFHandler<dim>::active_cell_iterator;
-      struct CellScratch;
       void
       assemble();
-      /// Elasticity matrix, body force, pre-stress and int_K div phi_i of one cell.
-      void
-      assemble_cell_volume(const active_cell_iterator &cell,
-                           const DeckLoads<dim>       &loads,
-                           CellScratch                &scratch);
-      /// Tractions and pressures on the outer boundary faces of one cell.
-      void
-      assemble_cell_boundary(const active_cell_iterator &cell,
-                             const DeckLoads<dim>       &loads,
-                             CellScratch                &scratch);
       void
       add_coupling_to_matrix();
       /// Adds the load of Mechanics/Fracture pressure to f.

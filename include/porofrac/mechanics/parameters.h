@@ -115,6 +115,15 @@ namespace porofrac
       /// Full system: GMRES preconditioned by the last LU factors, at most this many
       /// iterations before refactorizing (0: factorize whenever a face row changed).
       unsigned int reuse_iterations = 0;
+      /// The linear solver of distributed runs (DistributedContactLinearSolverRegistry).
+      std::string distributed_linear_solver = "direct";
+      /// Iterative linear solvers: relative residual min(linear_tolerance, linear_forcing *
+      /// relative residual of the last contact iterate).
+      double linear_tolerance = 1e-2;
+      double linear_forcing   = 1e-1;
+      /// Iterative linear solvers: at most this many Krylov iterations per solve (then the
+      /// step is solved directly).
+      unsigned int max_linear_iterations = 200;
 
       ContactReports reports;
     };

@@ -28,6 +28,20 @@ namespace porofrac
         p->execute(scene, context);
     }
 
+    template <int dim>
+    bool
+    any_postprocessor(const PhysicsParameters &parameters)
+    {
+      for (const auto &e : PostprocessorRegistry<dim>::instance().entries())
+        if (e.create(parameters))
+          return true;
+      return false;
+    }
+
+    template bool
+    any_postprocessor<2>(const PhysicsParameters &);
+    template bool
+    any_postprocessor<3>(const PhysicsParameters &);
     template void
     run_postprocessors(SceneView<2> &, io::RunContext &);
     template void

@@ -75,6 +75,11 @@ namespace porofrac
     template <int dim>
     void
     run_postprocessors(SceneView<dim> &scene, io::RunContext &context);
+
+    /// Whether the deck switches any postprocessor on.
+    template <int dim>
+    bool
+    any_postprocessor(const PhysicsParameters &parameters);
   } // namespace app
 } // namespace porofrac
 

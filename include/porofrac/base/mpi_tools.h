@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#ifndef POROFRAC_BASE_MPI_TOOLS_H
+#define POROFRAC_BASE_MPI_TOOLS_H
+
+#include <deal.II/base/mpi.h>
+
+#include <porofrac/base/exceptions.h>
+
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+namespace porofrac
+{
+  /// What a process failed with (for collectively()).
+  enum class FailureKind : int
+  {
+    none        = 0,
+    input       = 1, ///< InputError
+    solver      = 2, ///< SolverFailure
+    interrupted = 3, ///< Interrupted
+    internal    = 4  ///< any other std::exception
+  };
+
+  /**
+   * Runs @p work on every process of @p communicator. If it throws on any of them (an
+   * InputError, SolverFailure, Interrupted or another std::exception), every process throws
+   * the same exception, with the message of the lowest failing rank, after the vote. Work
+   * whose outcome may differ between processes (a point constraint seen by one process only,
+   * a file only rank 0 writes, a postprocessor that runs on rank 0) goes through here, so that
+   * no process is left waiting in a collective call while another one has left with an error.
+   */
+  template <typename Work>
+  void
+  collectively(const MPI_Comm communicator, const Work &work)
+  {
+    namespace MPI = dealii::Utilities::MPI;
+    std::tuple<int, std::string, std::string> failure{int(FailureKind::none), "", ""};
+    try
+      {
+        work();
+      }
+    catch (const InputError &e)
+      {
+        failure = {int(FailureKind::input), e.parameter, e.reason};
+      }
+    catch (const SolverFailure &e)
+      {
+        failure = {int(FailureKind::solver), "", e.what()};
+      }
+    catch (const Interrupted &e)
+      {
+        failure = {int(FailureKind::interrupted), "", e.what()};
+      }
+    catch (const std::exception &e)
+      {
+        failure = {int(FailureKind::internal), "", e.what()};
+      }
+    const unsigned int n = MPI::n_mpi_processes(communicator);
+    if (n > 1)
+      {
+        const bool         failed = std::get<0>(failure) != int(FailureKind::none);
+        const unsigned int first =
+          MPI::min(failed ? MPI::this_mpi_process(communicator) : n, communicator);
+        if (first == n)
+          return;
+        failure = MPI::broadcast(communicator, failure, first);
+      }
+    const auto &[kind, parameter, message] = failure;
+    switch (FailureKind(kind))
+      {
+        case FailureKind::none:
+          return;
+        case FailureKind::input:
+          throw InputError(parameter, message);
+        case FailureKind::solver:
+          throw SolverFailure(message);
+        case FailureKind::interrupted:
+          throw Interrupted(message);
+        default:
+          throw std::runtime_error(message);
+      }
+  }
+} // namespace porofrac
+
+#endif

@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/mechanics/contact_block_preconditioner.h>
+#include <porofrac/mechanics/distributed_contact_linear_solver.h>
+#include <porofrac/mechanics/mumps_factorization.h>
+
+#include <memory>
+
+namespace porofrac
+{
+  namespace mechanics
+  {
+    namespace
+    {
+      /**
+       * GMRES (right-preconditioned, restarted every 100 steps) on the whole (u, lambda)
+       * Jacobian with the ContactBlockPreconditioner, to the relative residual the contact
+       * iterations ask for (inexact steps). The preconditioner is set up when the face rows
+       * change; its AMG hierarchy and G once.
+       *
+       * Safeguard: where the diagonal approximation of the multiplier Schur complement fails
+       * (semi-smooth Newton rows with large lambda_n couplings, e.g. the second iterate from
+       * the open guess, doc/parallel.md), GMRES stagnates; after Max linear iterations the step
+       * is solved by MUMPS instead, and counted (statistics: direct fallbacks).
+       */
+      template <int dim>
+      class DistributedIterativeSolver : public DistributedContactLinearSolver<dim>
+      {
+      public:
+        using VectorType = TrilinosWrappers::MPI::Vector;
+
+        DistributedIterativeSolver(const DistributedElasticitySystem<dim> &system,
+                                   const ContactParameters                &parameters,
+                                   ConditionalOStream                     &progress,
+                                   TimerOutput                            &timer)
+            : system(system)
+            , max_iterations(parameters.max_linear_iterations)
+            , jacobian(system)
+            , fallback("contact mechanics (direct fallback)")
+            , progress(progress)
+        {
+          TimerOutput::Scope t(timer, "Mechanics: AMG and multiplier block setup");
+          preconditioner = std::make_unique<ContactBlockPreconditioner<dim>>(system);
+        }
+
+        void
+        set_tolerance(const double relative) override
+        {
+          tolerance = relative;
+        }
+
+        void
+        solve(const FaceRows<dim> &rows,
+              const unsigned int,
+              const VectorType &rhs,
+              VectorType       &x) override
+        {
+          Timer clock;
+          if (!ready || !same_owned_rows(system, rows, current_rows))
+            {
+              jacobian.assemble(rows);
+              preconditioner->set_rows(rows);
+              current_rows = rows;
+              ready        = true;
+              ++this->stats.factorizations;
+              this->stats.time_factorization += clock.wall_time();
+              clock.restart();
+            }
+          SolverControl           control(max_iterations, tolerance * rhs.l2_norm(), false, false);
+          SolverGMRES<VectorType> gmres(control,
+                                        typename SolverGMRES<VectorType>::AdditionalData(102,
+                                                                                         true));
+          x = 0;
+          try
+            {
+              gmres.solve(jacobian.matrix(), x, rhs, *preconditioner);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
+                       << " iterations; MUMPS solves this step" << std::endl;
+              fallback.factorize(jacobian.matrix());
+              fallback.solve(x, rhs);
+              ++this->stats.direct_fallbacks;
+            }
+          this->stats.linear_iterations += control.last_step();
+          this->stats.time_solves += clock.wall_time();
+        }
+
+        void
+        reset() override
+        {
+          ready = false;
+        }
+
+        std::string
+        name() const override
+        {
+          return "iterative";
+        }
+
+      private:
+        const DistributedElasticitySystem<dim>          &system;
+        const unsigned int                               max_iterations;
+        double                                           tolerance = 1e-8;
+        DistributedJacobian<dim>                         jacobian;
+        MumpsFactorization                               fallback;
+        ConditionalOStream                              &progress;
+        std::unique_ptr<ContactBlockPreconditioner<dim>> preconditioner;
+        bool                                             ready = false;
+        FaceRows<dim>                                    current_rows;
+      };
+
+      const std::string description =
+        "iterative: GMRES on the whole distributed (u, lambda) Jacobian, preconditioned by a "
+        "block upper-triangular preconditioner (smoothed-aggregation AMG with the rigid-body "
+        "modes on the elasticity block, the multiplier Schur complement approximated with "
+        "diag(K), factorized by MUMPS; doc/parallel.md), to the relative residual "
+        "min(Linear solver tolerance, Linear solver forcing x the contact residual); a step "
+        "whose GMRES does not converge in Max linear iterations is solved by MUMPS.";
+
+      template <int dim>
+      std::unique_ptr<DistributedContactLinearSolver<dim>>
+      make_iterative_solver(const DistributedElasticitySystem<dim> &system,
+                            const ContactParameters                &parameters,
+                            ConditionalOStream                     &progress,
+                            TimerOutput                            &timer)
+      {
+        return std::make_unique<DistributedIterativeSolver<dim>>(system,
+                                                                 parameters,
+                                                                 progress,
+                                                                 timer);
+      }
+    } // namespace
+
+    POROFRAC_REGISTER(DistributedContactLinearSolverRegistry<2>,
+                      "iterative",
+                      description,
+                      make_iterative_solver<2>)
+    POROFRAC_REGISTER(DistributedContactLinearSolverRegistry<3>,
+                      "iterative",
+                      description,
+                      make_iterative_solver<3>)
+  } // namespace mechanics
+} // namespace porofrac
