@@ -198,19 +198,23 @@ namespace porofrac
                           "Newton: halve the update (up to 4 times) while it increases the "
                           "residual norm (breaks the two-cycles of van Genuchten-Mualem k_r^w, "
                           "whose slope is unbounded at S^nw = 0).");
-        prm.declare_entry("Capillary pressure bound",
-                          "false",
-                          Patterns::Bool(),
-                          "Newton: keep p_c >= p_e at every node, p_e the entry pressure of its "
-                          "saturation law (0 for corey and van genuchten): the non-wetting "
-                          "pressure of a saturated node is projected onto p^w + p_e, and the "
-                          "Jacobian uses S'(p_e+) there. S = 0 for p_c <= p_e, so this removes a "
-                          "pressure that no equation fixes; use it with Mobility floor nw = 0.");
-        prm.declare_entry("Entry slope in Jacobian",
-                          "true",
-                          Patterns::Bool(),
-                          "Newton: use S'(p_e+) instead of 0 in the Jacobian where p_c <= p_e, "
-                          "the entry pressure of the saturation law (false: exact Jacobian).");
+        prm.declare_entry(
+          "Capillary pressure bound",
+          "false",
+          Patterns::Bool(),
+          "Newton: keep p_c >= p_e at every node, p_e the entry pressure of its "
+          "saturation law (0 for corey and van genuchten): the non-wetting "
+          "pressure of a saturated node is projected onto p^w + p_e, and the "
+          "Jacobian uses the entry slope there. S = 0 for p_c <= p_e, so this removes a "
+          "pressure that no equation fixes; use it with Mobility floor nw = 0.");
+        prm.declare_entry(
+          "Entry slope in Jacobian",
+          "true",
+          Patterns::Bool(),
+          "Newton: use the entry slope instead of 0 in the Jacobian where p_c <= p_e, "
+          "the entry pressure of the saturation law (false: exact Jacobian). The "
+          "entry slope is the larger of S'(p_e+) and the secant S(p_e + s)/s over "
+          "the law's pressure scale s (van Genuchten: S'(0+) = 0).");
         const auto &solvers = SerialLinearSolverRegistry::instance();
         prm.declare_entry("Linear solver",
                           "umfpack",

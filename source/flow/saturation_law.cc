@@ -3,6 +3,8 @@
 #include <porofrac/flow/saturation_law.h>
 #include <porofrac/io/text.h>
 
+#include <algorithm>
+
 namespace porofrac
 {
   namespace flow
@@ -11,6 +13,14 @@ namespace porofrac
         : p_e(entry_pressure)
         , scale(pressure_scale)
     {
+    }
+
+    double
+    SaturationLaw::entry_slope() const
+    {
+      const double tangent = derivative_above_entry(p_e + 1e-12 * scale);
+      const double secant  = saturation_above_entry(p_e + scale) / scale;
+      return std::max(tangent, secant);
     }
 
     double

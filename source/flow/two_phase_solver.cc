@@ -14,6 +14,16 @@ namespace porofrac
 {
   namespace flow
   {
+    namespace
+    {
+      /// Non-wetting saturation below which the phase counts as absent in the Jacobian (entry
+      /// slope, virtual pore volume of massless nodes): S errors below it are round-off in the
+      /// mass balance.
+      constexpr double absent_saturation = 1e-12;
+      /// The same with the capillary bound, which keeps p_c >= p_e and so sees S just above 0.
+      constexpr double bound_absent_saturation = 1e-6;
+    } // namespace
+
     template <int dim>
     TwoPhaseSolver<dim>::TwoPhaseSolver(const TpfaGrid<dim>           &grid,
                                         const std::array<RockType, 2> &rocks,
@@ -180,19 +190,20 @@ namespace porofrac
         {
           if (node_dof[i] == numbers::invalid_unsigned_int)
             continue;
+          if (J)
+            hold_absent_wetting_pressure(s, i, *J);
           const double PV = pore_volume(s, i, dPV), PV_old = old_pore_volume[i];
           if (PV == 0 && PV_old == 0)
             {
-              // Massless node where the non-wetting phase is absent (p_c <= p_e with the entry
-              // slope active; S < 1e-6 with the capillary bound, where the phase's mobilities
-              // can all vanish): a Jacobian-only virtual pore volume keeps its rows
-              // non-singular. Above 1e-6 the Jacobian stays exact (quadratic convergence).
-              const SaturationLaw &law = *rocks[grid.nodes[i].rock].saturation;
-              const double         pc  = s[i][1] - s[i][0];
-              const bool           absent =
-                parameters.capillary_bound ?
-                            law.saturation(pc) < 1e-6 :
-                            pc <= law.entry_pressure() && parameters.entry_slope && entry_slope_active;
+              // Massless node where the non-wetting phase is absent (with the entry slope active
+              // or the capillary bound), where the phase's mobilities can all vanish: a
+              // Jacobian-only virtual pore volume keeps its rows non-singular. Above the absent
+              // saturation the Jacobian stays exact (quadratic convergence).
+              const SaturationLaw &law    = *rocks[grid.nodes[i].rock].saturation;
+              const double         pc     = s[i][1] - s[i][0];
+              const bool           absent = parameters.capillary_bound ?
+                                              law.saturation(pc) < bound_absent_saturation :
+                                              entry_slope_replaces_tangent(law, pc);
               if (!(J && absent))
                 continue;
               const double dS  = slope(rocks[grid.nodes[i].rock], pc);
@@ -267,17 +278,50 @@ namespace porofrac
     } // namespace
 
     template <int dim>
+    void
+    TwoPhaseSolver<dim>::hold_absent_wetting_pressure(const State          &s,
+                                                      const unsigned int    i,
+                                                      SparseMatrix<double> &J) const
+    {
+      // Where the wetting phase is absent (S^nw = 1 to round-off, S' = 0) and immobile (k_r^w = 0
+      // without a mobility floor), no equation holds p^w: its mass PV (1 - S) and all its fluxes
+      // vanish for every nearby p^w. A Jacobian-only virtual compressibility fixes the Newton
+      // update of p^w there; the residual is unchanged.
+      const RockType &rock = rocks[grid.nodes[i].rock];
+      const double    S    = rock.saturation->saturation(s[i][1] - s[i][0]);
+      if (1. - S >= absent_saturation || rock.mobility(0, S) != 0)
+        return;
+      const double PVv = std::max(grid.pore_volume(i), 1e-3 * mean_pore_volume);
+      J.add(dof(i, 0), dof(i, 0), PVv / rock.saturation->pressure_scale());
+    }
+
+    template <int dim>
+    bool
+    TwoPhaseSolver<dim>::entry_slope_applies() const
+    {
+      return parameters.capillary_bound || (parameters.entry_slope && entry_slope_active);
+    }
+
+    template <int dim>
+    bool
+    TwoPhaseSolver<dim>::entry_slope_replaces_tangent(const SaturationLaw &law,
+                                                      const double         pc) const
+    {
+      return entry_slope_applies() && law.saturation(pc) < absent_saturation &&
+             law.derivative(pc) < 0.5 * law.entry_slope();
+    }
+
+    template <int dim>
     double
     TwoPhaseSolver<dim>::slope(const RockType &rock, const double pc) const
     {
-      // With entry_slope, the Jacobian uses the entry slope S'(p_e+) where p_c <= p_e (an
-      // inexact Newton that lets an absent phase enter); the residual is unchanged.
+      // Where the non-wetting phase is absent (S < absent_saturation, p_c <= p_e included) and
+      // the tangent is below half the law's entry slope, the Jacobian uses the entry slope: an
+      // inexact Newton that lets an absent phase enter and keeps its pressure in an equation
+      // (van Genuchten: S' -> 0 as p_c -> 0+). Corey and Brooks-Corey keep S' there (S' is
+      // above half the entry slope where S < absent_saturation). The residual is unchanged.
       const SaturationLaw &law = *rock.saturation;
-      const double         p_e = law.entry_pressure();
-      if (pc <= p_e &&
-          (parameters.capillary_bound || (parameters.entry_slope && entry_slope_active)))
-        return law.derivative(p_e + 1e-12 * law.pressure_scale());
-      return law.derivative(pc);
+      return entry_slope_replaces_tangent(law, pc) ? law.entry_slope() : law.derivative(pc);
     }
 
     template <int dim>

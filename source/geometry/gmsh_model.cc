@@ -267,5 +267,27 @@ namespace porofrac
     extract_gmsh_mesh<2>(const std::string &);
     template RawMesh<3>
     extract_gmsh_mesh<3>(const std::string &);
+
+    void
+    generate_mesh(GmshSession &session, const GeometryParameters &prm, const int dim)
+    {
+      try
+        {
+          session.run("Geometry", "gmsh could not mesh the domain", [dim] {
+            gmsh::model::mesh::generate(dim);
+          });
+        }
+      catch (const InputError &e)
+        {
+          const bool size_field_error =
+            e.reason.find("mathex") != std::string::npos ||
+            e.reason.find("Wrong mesh element size") != std::string::npos;
+          if (prm.size_expression.empty() || !size_field_error)
+            throw;
+          throw InputError("Geometry/Mesh size expression",
+                           "'" + prm.size_expression +
+                             "' is not a valid positive size field: " + e.reason);
+        }
+    }
   } // namespace geometry
 } // namespace porofrac

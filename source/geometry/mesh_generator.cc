@@ -141,9 +141,7 @@ namespace porofrac
         }
       set_background_size(prm, 2, fields);
       gmsh::option::setNumber("Mesh.Algorithm", prm.algorithm == "delaunay" ? 5 : 6);
-      session.run("Geometry", "gmsh could not mesh the domain", [] {
-        gmsh::model::mesh::generate(2);
-      });
+      generate_mesh(session, prm, 2);
 
       RawMesh<2> raw = extract_gmsh_mesh<2>("Geometry");
       for (const auto &f : network.fractures)

@@ -269,9 +269,7 @@ namespace porofrac
         gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay
         gmsh::option::setNumber("Mesh.Optimize", prm.mesh_optimization ? 1 : 0);
       });
-      session.run("Geometry", "gmsh could not mesh the domain", [] {
-        gmsh::model::mesh::generate(3);
-      });
+      generate_mesh(session, prm, 3);
 
       RawMesh<3> raw = extract_gmsh_mesh<3>("Geometry");
       for (const auto &f : network.fractures)

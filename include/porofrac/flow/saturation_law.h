@@ -49,6 +49,12 @@ namespace porofrac
         return p_c <= p_e ? 0. : derivative_above_entry(p_c);
       }
 
+      /// The slope the Newton Jacobian uses where p_c <= p_e (Entry slope in Jacobian): the
+      /// larger of the tangent S'(p_e+) and the secant S(p_e + scale)/scale. The secant keeps an
+      /// absent phase's pressure coupled where the tangent vanishes (van Genuchten, n > 1).
+      double
+      entry_slope() const;
+
       /// Capillary energy U(p_c) of eq. (6); U'(p_c) = p_c S'(p_c).
       double
       energy(const double p_c) const

@@ -225,8 +225,23 @@ namespace porofrac
                   const double        r,
                   const double        dt,
                   ConditionalOStream &verbose);
-      /// dS/dp_c of @p rock's law in the Jacobian: S'(p_e+) for p_c <= p_e where the entry slope
-      /// or the capillary bound is on, else the exact S'(p_c).
+      /// Jacobian-only virtual compressibility of p^w at node @p i where the wetting phase is
+      /// absent and immobile (no equation holds its pressure there).
+      void
+      hold_absent_wetting_pressure(const State          &s,
+                                   const unsigned int    i,
+                                   SparseMatrix<double> &J) const;
+      /// Whether this iteration's Jacobian uses the entry slope (Entry slope in Jacobian in its
+      /// first iterations, or the capillary bound).
+      bool
+      entry_slope_applies() const;
+      /// Whether the Jacobian uses @p law's entry slope at @p pc: the entry slope applies, the
+      /// non-wetting phase is absent (p_c <= p_e or S < 1e-12) and S'(p_c) is below half the
+      /// entry slope.
+      bool
+      entry_slope_replaces_tangent(const SaturationLaw &law, const double pc) const;
+      /// dS/dp_c of @p rock's law in the Jacobian: the law's entry slope where the non-wetting
+      /// phase is absent and entry_slope_applies(), else the exact S'(p_c).
       double
       slope(const RockType &rock, const double pc) const;
       /// The stagnation fallback of NewtonParameters: mass defect and normalized update small

@@ -2,6 +2,7 @@
 #ifndef POROFRAC_GEOMETRY_GMSH_MODEL_H
 #define POROFRAC_GEOMETRY_GMSH_MODEL_H
 
+#include <porofrac/geometry/gmsh_session.h>
 #include <porofrac/geometry/parameters.h>
 #include <porofrac/geometry/raw_mesh.h>
 
@@ -43,6 +44,14 @@ namespace porofrac
     set_background_size(const GeometryParameters &parameters,
                         const unsigned int        dim,
                         std::vector<double>       extra_fields);
+
+    /**
+     * Meshes the current gmsh model in @p dim dimensions inside @p session. An error of the
+     * size field (a MathEval syntax error, a size <= 0) names Geometry/Mesh size expression when
+     * one is set; any other error names Geometry.
+     */
+    void
+    generate_mesh(GmshSession &session, const GeometryParameters &parameters, const int dim);
   } // namespace geometry
 } // namespace porofrac
 
