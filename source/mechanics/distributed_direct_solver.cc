@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/distributed_contact_linear_solver.h>
@@ -16,7 +20,10 @@ namespace porofrac
       /**
        * Distributed LU of the whole (u, lambda) Jacobian by MUMPS (through Trilinos Amesos):
        * the symbolic analysis once (the pattern of the Jacobian never changes), a numerical
-       * factorization whenever a face row changed, otherwise only the triangular solves.
+       * factorization whenever a face row changed, otherwise only the triangular solves. With
+       * `Reuse factorization iterations` > 0, a Jacobian whose face rows changed on fewer faces
+       * than that is first solved by GMRES preconditioned with the last factors (only face rows
+       * differ, a low-rank change), as the serial full-system solver does.
        */
       template <int dim>
       class DistributedDirectSolver : public DistributedContactLinearSolver<dim>
@@ -24,21 +31,37 @@ namespace porofrac
       public:
         using VectorType = TrilinosWrappers::MPI::Vector;
 
-        explicit DistributedDirectSolver(const DistributedElasticitySystem<dim> &system)
+        DistributedDirectSolver(const DistributedElasticitySystem<dim> &system,
+                                const unsigned int                      reuse_iterations)
             : system(system)
             , jacobian(system)
             , lu("contact mechanics")
+            , reuse_iterations(reuse_iterations)
         {
         }
 
         void
         solve(const FaceRows<dim> &rows,
-              const unsigned int,
-              const VectorType &rhs,
-              VectorType       &x) override
+              const unsigned int   n_changed_faces,
+              const VectorType    &rhs,
+              VectorType          &x) override
         {
-          if (!factorized || !same_owned_rows(system, rows, factorized_rows))
-            factorize(rows);
+          if (factorized && same_owned_rows(system, rows, factorized_rows))
+            {
+              Timer clock;
+              lu.solve(x, rhs);
+              this->stats.time_solves += clock.wall_time();
+              return;
+            }
+          jacobian.assemble(rows);
+          // Every process must take the same branch (both are collective); the face states of
+          // faces a process does not own may lag, so its count of changed faces may differ.
+          const unsigned int changed =
+            Utilities::MPI::max(n_changed_faces, system.get_communicator());
+          if (factorized && reuse_iterations > 0 && dim * changed < reuse_iterations &&
+              try_gmres_on_old_factors(rhs, x))
+            return;
+          factorize(rows);
           Timer clock;
           lu.solve(x, rhs);
           this->stats.time_solves += clock.wall_time();
@@ -58,11 +81,45 @@ namespace porofrac
         }
 
       private:
+        /// The last LU factors as a preconditioner.
+        struct OldFactors
+        {
+          const MumpsFactorization &lu;
+          void
+          vmult(VectorType &dst, const VectorType &src) const
+          {
+            lu.solve(dst, src);
+          }
+        };
+
+        /// GMRES (right-preconditioned, relative residual 1e-12) on the assembled Jacobian with
+        /// the last factors; false if it needs more than reuse_iterations steps.
+        bool
+        try_gmres_on_old_factors(const VectorType &rhs, VectorType &x)
+        {
+          Timer                   clock;
+          SolverControl           control(reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
+          SolverGMRES<VectorType> gmres(
+            control, typename SolverGMRES<VectorType>::AdditionalData(reuse_iterations + 2, true));
+          x         = 0;
+          bool done = false;
+          try
+            {
+              gmres.solve(jacobian.matrix(), x, rhs, OldFactors{lu});
+              done = true;
+              ++this->stats.reused_factorizations;
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+            }
+          this->stats.time_solves += clock.wall_time();
+          return done;
+        }
+
         void
         factorize(const FaceRows<dim> &rows)
         {
           Timer clock;
-          jacobian.assemble(rows);
           lu.factorize(jacobian.matrix());
           factorized      = true;
           factorized_rows = rows;
@@ -73,22 +130,24 @@ namespace porofrac
         const DistributedElasticitySystem<dim> &system;
         DistributedJacobian<dim>                jacobian;
         MumpsFactorization                      lu;
+        const unsigned int                      reuse_iterations;
         bool                                    factorized = false;
         FaceRows<dim>                           factorized_rows;
       };
 
       const std::string description =
         "direct: MUMPS (through Trilinos Amesos) LU of the whole distributed (u, lambda) "
-        "Jacobian, refactorized whenever a face row changed.";
+        "Jacobian, refactorized whenever a face row changed (after GMRES on the last factors "
+        "with Reuse factorization iterations > 0).";
 
       template <int dim>
       std::unique_ptr<DistributedContactLinearSolver<dim>>
       make_direct_solver(const DistributedElasticitySystem<dim> &system,
-                         const ContactParameters &,
+                         const ContactParameters                &prm,
                          ConditionalOStream &,
                          TimerOutput &)
       {
-        return std::make_unique<DistributedDirectSolver<dim>>(system);
+        return std::make_unique<DistributedDirectSolver<dim>>(system, prm.reuse_iterations);
       }
     } // namespace
 

@@ -68,7 +68,7 @@ namespace
   /// The solution of a distributed solve, gathered on rank 0.
   struct Gathered
   {
-    unsigned int                                 iterations, linear_iterations;
+    unsigned int                                 iterations, linear_iterations, reused;
     Vector<double>                               u, lambda;
     std::vector<mechanics::ContactFaceValues<2>> faces;
   };
@@ -85,6 +85,7 @@ namespace
     const auto &s = problem.solve();
     return {s.iterations,
             s.linear_iterations,
+            s.reused_factorizations,
             problem.gather_displacement(serial_dofs),
             problem.gather_multipliers(),
             problem.gather_face_values()};
@@ -132,6 +133,9 @@ main(int argc, char **argv)
       tight.distributed_linear_solver    = "iterative";
       tight.tolerance                    = 1e-9;
       const Gathered iterative = solve_distributed(distributed, tight, nullptr, quiet, timer);
+      mechanics::ContactParameters reuse = c;
+      reuse.reuse_iterations             = 30;
+      const Gathered reused = solve_distributed(distributed, reuse, nullptr, quiet, timer);
       if (!rank_0)
         continue;
       const auto faces = mechanics::contact_face_values(*serial);
@@ -155,6 +159,15 @@ main(int argc, char **argv)
           << "; lambda and jumps equal to 1e-6: "
           << (relative_difference(iterative.lambda, direct.lambda) < 1e-6 &&
                   jump_difference(iterative.faces, direct.faces) < 1e-6 ?
+                "yes" :
+                "no")
+          << std::endl;
+      out << "  direct solver reusing its factors: iterations " << reused.iterations
+          << "; factors reused: " << (reused.reused > 0 ? "yes" : "no") << "; equal face states "
+          << same_states(reused.faces, direct.faces) << " of " << n_faces
+          << "; lambda and jumps equal to 1e-8: "
+          << (relative_difference(reused.lambda, direct.lambda) < 1e-8 &&
+                  jump_difference(reused.faces, direct.faces) < 1e-8 ?
                 "yes" :
                 "no")
           << std::endl;
