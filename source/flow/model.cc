@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include <deal.II/base/function_parser.h>
-
 #include <porofrac/base/exceptions.h>
 #include <porofrac/flow/model.h>
+#include <porofrac/io/expression.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,22 +49,10 @@ namespace porofrac
         for (unsigned int phase = 0; phase < 2; ++phase)
           {
             const std::string name = std::string("Flow/Matrix/Source ") + (phase == 0 ? "w" : "nw");
-            FunctionParser<dim> h(1);
-            try
-              {
-                h.initialize(dim == 2 ? "x,y" : "x,y,z", expression[phase], {});
-                h.value(Point<dim>()); // deal.II parses lazily: force it here
-              }
-            catch (...)
-              {
-                throw InputError(name,
-                                 "cannot parse '" + expression[phase] +
-                                   "' as a muparser expression of x, y (, z)");
-              }
+            const auto        h    = io::parse_expressions<dim>({expression[phase]}, name);
             for (unsigned int K = 0; K < grid.n_matrix_cells; ++K)
               {
-                const double value = h.value(grid.nodes[K].centre);
-                check_input(std::isfinite(value), name, "is not finite at a cell centre");
+                const double value      = h->value(grid.nodes[K].centre);
                 solver.source[K][phase] = grid.nodes[K].measure * value;
               }
           }

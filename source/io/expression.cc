@@ -8,6 +8,8 @@
 #include <porofrac/io/text.h>
 
 #include <cmath>
+#include <iostream>
+#include <sstream>
 
 namespace porofrac
 {
@@ -68,6 +70,25 @@ namespace porofrac
         const std::string              parameter;
         const std::string              extra_variable;
       };
+
+      /// Holds back what is written to std::cerr while it lives: deal.II prints muparser's
+      /// diagnostics there before throwing, and the InputError says it better.
+      class QuietStandardError
+      {
+      public:
+        QuietStandardError()
+            : saved(std::cerr.rdbuf(sink.rdbuf()))
+        {
+        }
+        ~QuietStandardError()
+        {
+          std::cerr.rdbuf(saved);
+        }
+
+      private:
+        std::ostringstream sink;
+        std::streambuf    *saved;
+      };
     } // namespace
 
 
@@ -95,6 +116,7 @@ namespace porofrac
         text += (text.empty() ? "'" : ", '") + e + "'";
       try
         {
+          const QuietStandardError quiet;
           function->initialize(coordinate_variables<dim>(extra_variable),
                                expressions,
                                {{"pi", dealii::numbers::PI}},

@@ -21,11 +21,13 @@ namespace porofrac
 
     /**
      * Estimates the number of cells gmsh makes for a generated domain, before meshing: the
-     * domain at Mesh size, the refinement boxes at their sizes, and a band of Transition
-     * distance around each fracture in which the size grows linearly from Fracture mesh size,
-     * all with cells of regular shape (area sqrt(3)/4 h^2, volume h^3/(6 sqrt(2))). The Mesh
-     * size expression is not included. Good to a small factor: it guards against sizes that are
-     * orders of magnitude off, it does not predict.
+     * domain at Mesh size (or at the Mesh size expression where that is smaller, sampled on a
+     * regular grid), the refinement boxes at their sizes, and a band of Transition distance
+     * around each fracture in which the size grows linearly from Fracture mesh size, all with
+     * cells of regular shape (area sqrt(3)/4 h^2, volume h^3/(6 sqrt(2))). Good to a small
+     * factor: it guards against sizes that are orders of magnitude off, it does not predict.
+     * Throws an InputError if the Mesh size expression is not positive and finite at a sample
+     * point inside the domain.
      */
     CellEstimate
     estimate_cells(const FractureNetwork &network, const GeometryParameters &parameters);
