@@ -73,7 +73,12 @@ namespace porofrac
     {
       const std::size_t i = std::find(names.begin(), names.end(), name) - names.begin();
       Assert(i < names.size(), dealii::ExcInternalError());
-      files[i] = std::make_unique<std::ofstream>(context.path(name));
+      // Only rank 0 of a distributed run writes; the other processes write into a closed
+      // stream, which discards the text.
+      files[i] = std::make_unique<std::ofstream>();
+      if (!context.writes_files())
+        return *files[i];
+      files[i]->open(context.path(name));
       check_input(bool(*files[i]), "Output/Directory", "cannot write " + name);
       *files[i] << (restarting() ? restored_text[i] : header);
       files[i]->flush();
@@ -117,6 +122,8 @@ namespace porofrac
     void
     Checkpointing::write(const Save &save)
     {
+      if (!context.writes_files())
+        return;
       dealii::TimerOutput::Scope t(context.timer, "Output: checkpoints");
       io::CheckpointWriter       w;
       w.put("scene kind", scene_kind);

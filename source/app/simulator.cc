@@ -32,34 +32,31 @@ namespace porofrac
   {
     namespace
     {
-      /// Whether the scene runs the distributed code on all processes. Only contact mechanics
-      /// is distributed; 'mesh only' runs on rank 0 while the other processes wait, and the
-      /// time-dependent physics refuse to run on more than one process (check_distributable).
+      /// Whether the scene runs the distributed code on all processes: contact mechanics and
+      /// two-phase flow. 'mesh only' runs on rank 0 while the other processes wait, and
+      /// poromechanics refuses to run on more than one process (check_distributable).
       bool
       distributed_scene(dealii::ParameterHandler &prm, const std::string &physics)
       {
         const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-        return physics == "contact mechanics" && (n > 1 || prm.get("Distributed") == "always");
+        return (physics == "contact mechanics" || physics == "two-phase flow") &&
+               (n > 1 || prm.get("Distributed") == "always");
       }
 
       /// Throws the same InputError on every process if the deck's physics has no distributed
-      /// code and the run has more than one MPI process (two-phase flow and poromechanics:
-      /// running them on rank 0 only would leave the other processes idle without saying so).
+      /// code and the run has more than one MPI process (poromechanics: running it on rank 0
+      /// only would leave the other processes idle without saying so).
       void
       check_distributable(const std::string &physics)
       {
         const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-        const std::string  what =
-          physics == "two-phase flow" ?
-             "the two-phase flow (TPFA Newton, time stepping) is not distributed yet" :
-             "the coupled flow and mechanics (fixed point or Newton-Krylov over the flow and the "
-             "contact mechanics) is not distributed yet";
-        check_input(n == 1 || physics == "contact mechanics" || physics == "mesh only",
+        check_input(n == 1 || physics != "poromechanics",
                     "Physics",
                     "'" + physics + "' cannot run on " + std::to_string(n) +
-                      " MPI processes: " + what +
-                      "; run it on one process (without mpirun, or mpirun -np 1). Only contact "
-                      "mechanics runs distributed (doc/parallel.md)");
+                      " MPI processes: the coupled flow and mechanics (fixed point or "
+                      "Newton-Krylov over the flow and the contact mechanics) is not distributed "
+                      "yet; run it on one process (without mpirun, or mpirun -np 1). Contact "
+                      "mechanics and two-phase flow run distributed (doc/parallel.md)");
       }
 
       /// Takes the output directory on rank 0 of @p communicator (doc: io::OutputDirectory); the
@@ -202,7 +199,15 @@ namespace porofrac
         else if (physics == "contact mechanics")
           run_contact_mechanics_scene(physics_parameters, *mesh, context);
         else if (physics == "two-phase flow")
-          run_two_phase_flow_scene(physics_parameters, *mesh, context);
+          {
+            std::vector<unsigned int> cell_owner;
+            if (context.communicator != MPI_COMM_SELF)
+              {
+                TimerOutput::Scope t(context.timer, "Geometry: partition and distribution");
+                cell_owner = geometry::partition_cells(*mesh, context.communicator);
+              }
+            run_two_phase_flow_scene(physics_parameters, *mesh, context, cell_owner);
+          }
         else if (physics == "poromechanics")
           run_poromechanics_scene(physics_parameters, *mesh, context);
       }

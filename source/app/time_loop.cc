@@ -42,7 +42,8 @@ namespace porofrac
                   const std::function<StepOutcome(const double dt)>   &attempt,
                   const std::function<void()>                         &accept,
                   const std::function<void(const bool restore_first)> &write_accepted_state,
-                  dealii::ConditionalOStream                          &progress)
+                  dealii::ConditionalOStream                          &progress,
+                  const MPI_Comm                                       communicator)
     {
       const auto at = [&]() { return " at t = " + io::to_text(stepper.time()) + " s"; };
       while (!stepper.finished())
@@ -71,7 +72,8 @@ namespace porofrac
             }
           stepper.accept();
           accept();
-          if (interrupt_signal() != 0 && !stepper.finished())
+          if (dealii::Utilities::MPI::max(interrupt_signal(), communicator) != 0 &&
+              !stepper.finished())
             {
               write_accepted_state(false);
               throw Interrupted(label + ": " + std::string(interrupt_description()) +

@@ -5,6 +5,7 @@
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/app/time_loop.h>
 #include <porofrac/app/two_phase_flow_scene.h>
+#include <porofrac/base/mpi_tools.h>
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/flow/model.h>
 #include <porofrac/io/pvd_writer.h>
@@ -88,9 +89,10 @@ namespace porofrac
       class FlowRun
       {
       public:
-        FlowRun(const PhysicsParameters      &parameters,
-                const geometry::CutMesh<dim> &mesh,
-                io::RunContext               &context);
+        FlowRun(const PhysicsParameters         &parameters,
+                const geometry::CutMesh<dim>    &mesh,
+                io::RunContext                  &context,
+                const std::vector<unsigned int> &cell_owner);
 
         /// The state at t = 0 (or the restored one) written, history.csv open.
         void
@@ -117,23 +119,26 @@ namespace porofrac
 
         const geometry::CutMesh<dim> &mesh;
         io::RunContext               &context;
-        flow::FlowModel<dim>          model;
-        flow::TpfaGrid<dim>          &grid;
-        flow::TwoPhaseSolver<dim>    &solver;
-        FlowTotals                    totals;
-        flow::StepResult              result;
-        io::PvdWriter                 pvd;
-        int                           last_written = -1; // step of the last field files
-        Checkpointing                 checkpoints;
-        std::ofstream                *history = nullptr;
+        /// Whether this process writes the files (rank 0 of the run's processes).
+        const bool                 writer;
+        flow::FlowModel<dim>       model;
+        flow::TpfaGrid<dim>       &grid;
+        flow::TwoPhaseSolver<dim> &solver;
+        FlowTotals                 totals;
+        flow::StepResult           result;
+        io::PvdWriter              pvd;
+        int                        last_written = -1; // step of the last field files
+        Checkpointing              checkpoints;
+        std::ofstream             *history = nullptr;
       };
 
 
 
       template <int dim>
-      FlowRun<dim>::FlowRun(const PhysicsParameters      &parameters,
-                            const geometry::CutMesh<dim> &mesh,
-                            io::RunContext               &context)
+      FlowRun<dim>::FlowRun(const PhysicsParameters         &parameters,
+                            const geometry::CutMesh<dim>    &mesh,
+                            io::RunContext                  &context,
+                            const std::vector<unsigned int> &cell_owner)
           : stepper(parameters.flow.stepping.final_time,
                     parameters.flow.stepping.initial_step,
                     parameters.flow.stepping.maximum_step,
@@ -141,6 +146,7 @@ namespace porofrac
                     parameters.flow.stepping.maximum_cuts)
           , mesh(mesh)
           , context(context)
+          , writer(context.writes_files())
           , model(flow::make_flow_model<dim>(parameters.flow, mesh))
           , grid(*model.grid)
           , solver(*model.solver)
@@ -148,6 +154,8 @@ namespace porofrac
           , checkpoints(context, "two-phase flow", stepper, pvd, {"history.csv"})
       {
         solver.timer = &context.timer;
+        if (context.communicator != MPI_COMM_SELF)
+          solver.distribute(context.communicator, grid.node_owners(cell_owner));
         context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
                        << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
                        << " interface nodes, " << grid.n_intersections << " intersection nodes, "
@@ -236,7 +244,7 @@ namespace porofrac
       void
       FlowRun<dim>::output(const unsigned int step, const double t)
       {
-        if (context.output_format == "none")
+        if (context.output_format == "none" || !writer)
           return;
         TimerOutput::Scope timer(context.timer, "Flow: output");
         const std::string  name   = "flow-" + Utilities::int_to_string(step, 5);
@@ -310,7 +318,10 @@ namespace porofrac
         SceneView<dim> scene{mesh, parameters};
         scene.flow = &model;
         scene.time = stepper.time();
-        run_postprocessors(scene, context);
+        collectively(context.communicator, [&]() {
+          if (writer)
+            run_postprocessors(scene, context);
+        });
       }
     } // namespace
 
@@ -318,11 +329,12 @@ namespace porofrac
 
     template <int dim>
     void
-    run_two_phase_flow_scene(const PhysicsParameters      &parameters,
-                             const geometry::CutMesh<dim> &mesh,
-                             io::RunContext               &context)
+    run_two_phase_flow_scene(const PhysicsParameters         &parameters,
+                             const geometry::CutMesh<dim>    &mesh,
+                             io::RunContext                  &context,
+                             const std::vector<unsigned int> &cell_owner)
     {
-      FlowRun<dim> run(parameters, mesh, context);
+      FlowRun<dim> run(parameters, mesh, context, cell_owner);
       run.start();
       run_time_loop(
         run.stepper,
@@ -330,17 +342,20 @@ namespace porofrac
         [&](const double dt) { return run.attempt(dt); },
         [&]() { run.accept(); },
         [&](const bool restore_first) { run.write_accepted_state(restore_first); },
-        context.progress);
+        context.progress,
+        context.communicator);
       run.finish(parameters);
     }
 
     template void
     run_two_phase_flow_scene(const PhysicsParameters &,
                              const geometry::CutMesh<2> &,
-                             io::RunContext &);
+                             io::RunContext &,
+                             const std::vector<unsigned int> &);
     template void
     run_two_phase_flow_scene(const PhysicsParameters &,
                              const geometry::CutMesh<3> &,
-                             io::RunContext &);
+                             io::RunContext &,
+                             const std::vector<unsigned int> &);
   } // namespace app
 } // namespace porofrac

@@ -432,6 +432,30 @@ namespace porofrac
       return 0.;
     }
 
+    template <int dim>
+    std::vector<unsigned int>
+    TpfaGrid<dim>::node_owners(const std::vector<unsigned int> &cell_owner) const
+    {
+      constexpr unsigned int    none = numbers::invalid_unsigned_int;
+      std::vector<unsigned int> owner(n_nodes(), none);
+      for (unsigned int K = 0; K < n_matrix_cells; ++K)
+        owner[K] = cell_owner[K];
+      for (bool changed = true; changed;)
+        {
+          changed = false;
+          for (const auto &c : connections)
+            if ((owner[c.a] == none) != (owner[c.b] == none))
+              {
+                owner[owner[c.a] == none ? c.a : c.b] = std::min(owner[c.a], owner[c.b]);
+                changed                               = true;
+              }
+        }
+      for (auto &o : owner)
+        if (o == none)
+          o = 0;
+      return owner;
+    }
+
     template class TpfaGrid<2>;
     template class TpfaGrid<3>;
   } // namespace flow

@@ -5,6 +5,7 @@
 #include <porofrac/base/interrupt.h>
 #include <porofrac/flow/two_phase_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <memory>
@@ -32,16 +33,33 @@ namespace porofrac
         , rocks(rocks)
         , parameters(parameters)
     {
+      number_unknowns({});
+      mean_pore_volume =
+        total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
+      linear_solver = create_serial_linear_solver(parameters.linear_solver, "Flow/Linear solver");
+      storage       = std::make_shared<GridPorosity<dim>>(grid);
+      state.assign(grid.n_nodes(), {{0., 0.}});
+      begin_time_step();
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::number_unknowns(const std::vector<unsigned int> &node_owner)
+    {
       node_dof.assign(grid.n_nodes(), numbers::invalid_unsigned_int);
       n_free = 0;
-      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-        if (!grid.is_dirichlet(i))
-          node_dof[i] = n_free++;
+      const unsigned int n_ranks =
+        node_owner.empty() ? 1 : *std::max_element(node_owner.begin(), node_owner.end()) + 1;
+      for (unsigned int rank = 0; rank < n_ranks; ++rank)
+        for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+          if (!grid.is_dirichlet(i) && (node_owner.empty() || node_owner[i] == rank))
+            node_dof[i] = n_free++;
       DynamicSparsityPattern dsp(2 * n_free, 2 * n_free);
-      for (unsigned int i = 0; i < n_free; ++i)
-        for (unsigned int p = 0; p < 2; ++p)
-          for (unsigned int q = 0; q < 2; ++q)
-            dsp.add(2 * i + p, 2 * i + q);
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (node_dof[i] != numbers::invalid_unsigned_int)
+          for (unsigned int p = 0; p < 2; ++p)
+            for (unsigned int q = 0; q < 2; ++q)
+              dsp.add(dof(i, p), dof(i, q));
       for (const auto &c : grid.connections)
         if (node_dof[c.a] != numbers::invalid_unsigned_int &&
             node_dof[c.b] != numbers::invalid_unsigned_int)
@@ -51,15 +69,34 @@ namespace porofrac
                 dsp.add(dof(c.a, p), dof(c.b, q));
                 dsp.add(dof(c.b, p), dof(c.a, q));
               }
+      jacobian.clear();
       sparsity.copy_from(dsp);
-      mean_pore_volume =
-        total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       jacobian.reinit(sparsity);
-      linear_solver = create_serial_linear_solver(parameters.linear_solver, "Flow/Linear solver");
-      storage       = std::make_shared<GridPorosity<dim>>(grid);
-      state.assign(grid.n_nodes(), {{0., 0.}});
-      begin_time_step();
     }
+
+
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::distribute(const MPI_Comm                   communicator,
+                                    const std::vector<unsigned int> &node_owner)
+    {
+      AssertDimension(node_owner.size(), grid.n_nodes());
+      number_unknowns(node_owner);
+      const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+      owned_node.assign(grid.n_nodes(), false);
+      IndexSet owned(2 * n_free);
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (node_owner[i] == rank && node_dof[i] != numbers::invalid_unsigned_int)
+          {
+            owned_node[i] = true;
+            owned.add_range(dof(i, 0), dof(i, 1) + 1);
+          }
+      owned.compress();
+      distribution = std::make_unique<DistributedNewtonSystem>(communicator, sparsity, owned);
+    }
+
+
 
     template <int dim>
     void
@@ -188,7 +225,7 @@ namespace porofrac
       std::array<double, 2> dPV;
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         {
-          if (node_dof[i] == numbers::invalid_unsigned_int)
+          if (node_dof[i] == numbers::invalid_unsigned_int || !assembles(i))
             continue;
           if (J)
             hold_absent_wetting_pressure(s, i, *J);
@@ -233,30 +270,33 @@ namespace porofrac
       // Sources |K| h^alpha (scheme (11a)), on the right-hand side.
       if (!source.empty())
         for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-          if (node_dof[i] != numbers::invalid_unsigned_int)
+          if (node_dof[i] != numbers::invalid_unsigned_int && assembles(i))
             for (unsigned int phase = 0; phase < 2; ++phase)
               residual(dof(i, phase)) -= dt * source[i][phase];
       // Fluxes.
       std::array<double, 4> d;
       for (const auto &c : grid.connections)
-        for (unsigned int phase = 0; phase < 2; ++phase)
-          {
-            const double                      F    = dt * flux(c, s, phase, d);
-            const std::array<unsigned int, 2> rows = {{dof(c.a, phase), dof(c.b, phase)}};
-            const std::array<unsigned int, 4> cols = {
-              {dof(c.a, 0), dof(c.a, 1), dof(c.b, 0), dof(c.b, 1)}};
-            for (unsigned int r = 0; r < 2; ++r)
-              {
-                if (rows[r] == numbers::invalid_unsigned_int)
-                  continue;
-                const double sign = (r == 0 ? 1. : -1.);
-                residual(rows[r]) += sign * F;
-                if (J)
-                  for (unsigned int k = 0; k < 4; ++k)
-                    if (cols[k] != numbers::invalid_unsigned_int && d[k] != 0)
-                      J->add(rows[r], cols[k], sign * dt * d[k]);
-              }
-          }
+        if (assembles(c.a) || assembles(c.b))
+          for (unsigned int phase = 0; phase < 2; ++phase)
+            {
+              const double                      F    = dt * flux(c, s, phase, d);
+              const std::array<unsigned int, 2> rows = {{dof(c.a, phase), dof(c.b, phase)}};
+              const std::array<unsigned int, 4> cols = {
+                {dof(c.a, 0), dof(c.a, 1), dof(c.b, 0), dof(c.b, 1)}};
+              for (unsigned int r = 0; r < 2; ++r)
+                {
+                  if (rows[r] == numbers::invalid_unsigned_int || !assembles(r == 0 ? c.a : c.b))
+                    continue;
+                  const double sign = (r == 0 ? 1. : -1.);
+                  residual(rows[r]) += sign * F;
+                  if (J)
+                    for (unsigned int k = 0; k < 4; ++k)
+                      if (cols[k] != numbers::invalid_unsigned_int && d[k] != 0)
+                        J->add(rows[r], cols[k], sign * dt * d[k]);
+                }
+            }
+      if (distribution)
+        distribution->sum(residual);
     }
 
     namespace
@@ -483,14 +523,21 @@ namespace porofrac
       std::unique_ptr<TimerOutput::Scope> t;
       if (timer)
         t = std::make_unique<TimerOutput::Scope>(*timer,
-                                                 "Flow: linear solve (" + linear_solver->name() +
+                                                 "Flow: linear solve (" +
+                                                   (distribution ? std::string("mumps") :
+                                                                   linear_solver->name()) +
                                                    ")");
       // A singular or failed factorisation is a failed step (converged = false), never an
       // exception: the caller cuts the time step.
       try
         {
-          linear_solver->initialize(jacobian);
-          linear_solver->solve(residual, update, parameters.linear_tolerance);
+          if (distribution)
+            distribution->solve(jacobian, residual, update);
+          else
+            {
+              linear_solver->initialize(jacobian);
+              linear_solver->solve(residual, update, parameters.linear_tolerance);
+            }
         }
       catch (const SolverFailure &e)
         {
@@ -606,6 +653,9 @@ namespace porofrac
                        state[i][0] + rocks[grid.nodes[i].rock].saturation->entry_pressure());
       for (unsigned int it = 0; it <= parameters.max_iterations; ++it)
         {
+          // Every process stops at the same iteration (a signal may reach one first).
+          if (distribution && !distribution->all_processes(interrupt_signal() == 0))
+            throw Interrupted("SIGINT or SIGTERM received; stopped in a flow Newton iteration");
           throw_if_interrupted("in a flow Newton iteration");
           // A non-finite state (initial guess or diverged update) is a failed step.
           for (const auto &p : state)

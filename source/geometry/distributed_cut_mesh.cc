@@ -45,8 +45,7 @@ namespace porofrac
         , communicator(communicator)
         , rank(Utilities::MPI::this_mpi_process(communicator))
     {
-      check_same_mesh(serial_mesh, communicator);
-      partition(serial_mesh);
+      owner = partition_cells(serial_mesh, communicator);
       const auto description =
         TriangulationDescription::Utilities::create_description_from_triangulation(
           serial_mesh.triangulation, communicator);
@@ -64,13 +63,14 @@ namespace porofrac
 
 
     template <int dim>
-    void
-    DistributedCutMesh<dim>::partition(CutMesh<dim> &serial_mesh)
+    std::vector<unsigned int>
+    partition_cells(CutMesh<dim> &serial_mesh, const MPI_Comm communicator)
     {
-      Triangulation<dim> &tria = serial_mesh.triangulation;
-      const unsigned int  n    = Utilities::MPI::n_mpi_processes(communicator);
-      owner.assign(tria.n_active_cells(), 0);
-      if (rank == 0 && n > 1)
+      check_same_mesh(serial_mesh, communicator);
+      Triangulation<dim>       &tria = serial_mesh.triangulation;
+      const unsigned int        n    = Utilities::MPI::n_mpi_processes(communicator);
+      std::vector<unsigned int> owner(tria.n_active_cells(), 0);
+      if (Utilities::MPI::this_mpi_process(communicator) == 0 && n > 1)
         {
           DynamicSparsityPattern graph;
           GridTools::get_face_connectivity_of_cells(tria, graph);
@@ -87,10 +87,10 @@ namespace porofrac
           for (const auto &cell : tria.active_cell_iterators())
             owner[cell->active_cell_index()] = cell->subdomain_id();
         }
-      // One partition for all ranks (computed once, so that no two ranks can disagree).
       owner = Utilities::MPI::broadcast(communicator, owner, 0);
       for (const auto &cell : tria.active_cell_iterators())
         cell->set_subdomain_id(owner[cell->active_cell_index()]);
+      return owner;
     }
 
 
@@ -102,6 +102,10 @@ namespace porofrac
       return cell_iterator(serial.triangulation.create_cell_iterator(local->id()));
     }
 
+    template std::vector<unsigned int>
+    partition_cells(CutMesh<2> &, const MPI_Comm);
+    template std::vector<unsigned int>
+    partition_cells(CutMesh<3> &, const MPI_Comm);
     template class DistributedCutMesh<2>;
     template class DistributedCutMesh<3>;
   } // namespace geometry

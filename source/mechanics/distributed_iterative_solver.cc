@@ -5,9 +5,9 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/mumps_factorization.h>
 #include <porofrac/mechanics/contact_block_preconditioner.h>
 #include <porofrac/mechanics/distributed_contact_linear_solver.h>
-#include <porofrac/mechanics/mumps_factorization.h>
 
 #include <memory>
 

@@ -3,6 +3,7 @@
 #define POROFRAC_APP_TIME_LOOP_H
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
 
 #include <porofrac/base/time_stepper.h>
 
@@ -30,7 +31,8 @@ namespace porofrac
      * SIGTERM: base/interrupt.h) during or between steps, @p write_accepted_state writes the
      * last accepted state (its argument: whether the scene must first restore it, because an
      * attempt changed it) and a SolverFailure or Interrupted naming @p label and the time is
-     * thrown.
+     * thrown. The processes of @p communicator (that run the loop together) stop after the
+     * same step when a signal reaches any of them.
      */
     void
     run_time_loop(AdaptiveTimeStepper                                 &stepper,
@@ -38,7 +40,8 @@ namespace porofrac
                   const std::function<StepOutcome(const double dt)>   &attempt,
                   const std::function<void()>                         &accept,
                   const std::function<void(const bool restore_first)> &write_accepted_state,
-                  dealii::ConditionalOStream                          &progress);
+                  dealii::ConditionalOStream                          &progress,
+                  const MPI_Comm communicator = MPI_COMM_SELF);
   } // namespace app
 } // namespace porofrac
 

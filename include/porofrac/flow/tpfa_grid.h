@@ -116,6 +116,13 @@ namespace porofrac
                nodes[i].kind == NodeKind::dirichlet_fracture;
       }
 
+      /// The process of every node for a distributed Newton system: matrix cell K that of
+      /// @p cell_owner[K]; every other node that of the first node found connected to it
+      /// (through a connection, in order), so that fracture, interface and intersection nodes
+      /// go with a neighbouring cell.
+      std::vector<unsigned int>
+      node_owners(const std::vector<unsigned int> &cell_owner) const;
+
       /// Damaged layer on each side of a fracture: thickness d_a (m) and porosity
       /// phi_a; its saturation law is the fracture's (rock a = f, as in 5.3). 0 = massless
       /// interface nodes.

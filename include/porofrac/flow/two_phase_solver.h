@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/base/linear_solver.h>
+#include <porofrac/flow/distributed_newton_system.h>
 #include <porofrac/flow/parameters.h>
 #include <porofrac/flow/rock_type.h>
 #include <porofrac/flow/storage_model.h>
@@ -80,6 +81,25 @@ namespace porofrac
       TwoPhaseSolver(const TpfaGrid<dim>           &grid,
                      const std::array<RockType, 2> &rocks,
                      const NewtonParameters        &parameters);
+
+      /**
+       * Shares the Newton systems with the other processes of @p communicator
+       * (DistributedNewtonSystem): this process assembles the rows of the nodes i with
+       * @p node_owner[i] equal to its rank, and MUMPS solves on all of them. The unknowns are
+       * renumbered process by process. The state, the pore volumes and everything computed
+       * from them (mass defect, energy terms, chops) stay whole on every process, so all
+       * processes take the same steps; with one process the results are the serial ones up to
+       * the round-off of MUMPS against the serial linear solver.
+       */
+      void
+      distribute(const MPI_Comm communicator, const std::vector<unsigned int> &node_owner);
+
+      /// Whether distribute() was called.
+      bool
+      distributed() const
+      {
+        return distribution != nullptr;
+      }
 
       /// Phase pressures of Dirichlet nodes, by boundary id, for matrix and fracture nodes.
       std::map<types::boundary_id, std::array<double, 2>> matrix_dirichlet;
@@ -187,10 +207,23 @@ namespace porofrac
       SparseMatrix<double> jacobian;
 
     private:
+      /// Numbers the unknowns of the non-Dirichlet nodes, those of process 0 first if
+      /// @p node_owner is not empty, and makes the sparsity pattern and the Jacobian.
+      void
+      number_unknowns(const std::vector<unsigned int> &node_owner);
+      /// Whether this process assembles the rows of node @p i.
+      bool
+      assembles(const unsigned int i) const
+      {
+        return !distribution || owned_node[i];
+      }
       /// Solver of the Newton systems (it may keep set-up of the fixed sparsity pattern).
       std::shared_ptr<SerialLinearSolver> linear_solver;
-      std::shared_ptr<const StorageModel> storage;
-      std::vector<unsigned int>           node_dof;
+      /// The shared Newton systems (distribute()), and which nodes this process assembles.
+      std::unique_ptr<DistributedNewtonSystem> distribution;
+      std::vector<bool>                        owned_node;
+      std::shared_ptr<const StorageModel>      storage;
+      std::vector<unsigned int>                node_dof;
       /// Pore volume of every node at begin_time_step().
       std::vector<double> old_pore_volume;
       /// Pore volume of node i and its derivatives with respect to (p^w_i, p^nw_i).

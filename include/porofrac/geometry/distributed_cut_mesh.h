@@ -17,6 +17,16 @@ namespace porofrac
     using namespace dealii;
 
     /**
+     * The owners of the active cells of @p serial_mesh among the ranks of @p communicator: a
+     * METIS partition of the cell graph, in which the two cells of each fracture face are
+     * neighbours (so that the partition does not follow the fractures), computed on rank 0 and
+     * broadcast (no two ranks can disagree). Sets the subdomain ids of the cells. Collective.
+     */
+    template <int dim>
+    std::vector<unsigned int>
+    partition_cells(CutMesh<dim> &serial_mesh, const MPI_Comm communicator);
+
+    /**
      * A cut mesh distributed over the ranks of a communicator: the serial CutMesh (built the
      * same on every rank, doc/parallel.md) is partitioned with METIS and handed to a
      * parallel::fullydistributed::Triangulation that holds only the locally owned cells and one
@@ -104,15 +114,11 @@ namespace porofrac
       serial_cell(const cell_iterator &local) const;
 
     private:
-      /// Partitions the serial cells on rank 0 and broadcasts the owners.
-      void
-      partition(CutMesh<dim> &serial_mesh);
-
-      MPI_Comm                         communicator;
-      unsigned int                     rank;
-      std::vector<types::subdomain_id> owner;
-      std::vector<unsigned int>        owned_faces;
-      std::vector<cell_iterator>       local_cells;
+      MPI_Comm                   communicator;
+      unsigned int               rank;
+      std::vector<unsigned int>  owner;
+      std::vector<unsigned int>  owned_faces;
+      std::vector<cell_iterator> local_cells;
     };
   } // namespace geometry
 } // namespace porofrac

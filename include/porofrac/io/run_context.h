@@ -53,6 +53,13 @@ namespace porofrac
       /// distributed (then `report`, `progress` and the files of the run are rank 0's).
       MPI_Comm communicator = MPI_COMM_SELF;
 
+      /// Whether this process writes the run's files (rank 0 of the communicator).
+      bool
+      writes_files() const
+      {
+        return Utilities::MPI::this_mpi_process(communicator) == 0;
+      }
+
       /// output_directory + "/" + @p file.
       std::string
       path(const std::string &file) const

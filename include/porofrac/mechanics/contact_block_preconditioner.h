@@ -7,8 +7,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <porofrac/base/mumps_factorization.h>
 #include <porofrac/mechanics/distributed_elasticity_system.h>
-#include <porofrac/mechanics/mumps_factorization.h>
 
 #include <memory>
 #include <vector>

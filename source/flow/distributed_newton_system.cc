@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/array_view.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <porofrac/flow/distributed_newton_system.h>
+
+#include <vector>
+
+namespace porofrac
+{
+  namespace flow
+  {
+    using namespace dealii;
+
+    DistributedNewtonSystem::DistributedNewtonSystem(const MPI_Comm         communicator,
+                                                     const SparsityPattern &sparsity,
+                                                     const IndexSet        &owned)
+        : communicator(communicator)
+        , owned(owned)
+        , lu("Flow: the Newton system")
+    {
+      matrix.reinit(owned, owned, sparsity, communicator);
+    }
+
+
+
+    void
+    DistributedNewtonSystem::sum(Vector<double> &v) const
+    {
+      const ArrayView<double> values = make_array_view(v);
+      Utilities::MPI::sum(ArrayView<const double>(values), communicator, values);
+    }
+
+
+
+    void
+    DistributedNewtonSystem::solve(const SparseMatrix<double> &jacobian,
+                                   const Vector<double>       &residual,
+                                   Vector<double>             &update)
+    {
+      std::vector<types::global_dof_index> columns;
+      std::vector<double>                  values;
+      for (const auto row : owned)
+        {
+          columns.clear();
+          values.clear();
+          for (auto entry = jacobian.begin(row); entry != jacobian.end(row); ++entry)
+            {
+              columns.push_back(entry->column());
+              values.push_back(entry->value());
+            }
+          matrix.set(row, columns.size(), columns.data(), values.data());
+        }
+      matrix.compress(VectorOperation::insert);
+      TrilinosWrappers::MPI::Vector b(owned, communicator), x(owned, communicator);
+      for (const auto row : owned)
+        b[row] = residual(row);
+      b.compress(VectorOperation::insert);
+      lu.factorize(matrix);
+      lu.solve(x, b);
+      update = 0;
+      for (const auto row : owned)
+        update(row) = x[row];
+      sum(update);
+    }
+
+
+
+    bool
+    DistributedNewtonSystem::all_processes(const bool value) const
+    {
+      return Utilities::MPI::min(value ? 1 : 0, communicator) == 1;
+    }
+  } // namespace flow
+} // namespace porofrac
