@@ -28,9 +28,9 @@ namespace
 {
   struct Run
   {
-    std::vector<unsigned int>         iterations;
-    std::vector<double>               mass_defect, dissipation, boundary_work;
-    flow::TwoPhaseSolver<2>::State    state;
+    std::vector<unsigned int>      iterations;
+    std::vector<double>            mass_defect, dissipation, boundary_work;
+    flow::TwoPhaseSolver<2>::State state;
   };
 
   /// The drainage on @p grid, distributed over @p communicator if @p cell_owner is given.
@@ -39,9 +39,9 @@ namespace
         const MPI_Comm                   communicator,
         const std::vector<unsigned int> &cell_owner)
   {
-    ConditionalOStream       quiet(std::cout, false);
-    const auto               rocks = flow_test::corey_rocks();
-    flow::TwoPhaseSolver<2>  solver(grid, rocks, flow::NewtonParameters());
+    ConditionalOStream      quiet(std::cout, false);
+    const auto              rocks = flow_test::corey_rocks();
+    flow::TwoPhaseSolver<2> solver(grid, rocks, flow::NewtonParameters());
     if (!cell_owner.empty())
       solver.distribute(communicator, grid.node_owners(cell_owner));
     const double pc_in        = rocks[0].saturation->inverse(0.5, "test");
@@ -100,7 +100,7 @@ main(int argc, char **argv)
   const auto                       mesh  = flow_test::unit_square(flow_test::xt_network, 0.1, 0.05);
   flow::TpfaGrid<2>                grid(*mesh, false, {0, 1}, {0});
   flow_test::set_data(grid);
-  const auto cell_owner = geometry::partition_cells(*mesh, world);
+  const auto cell_owner  = geometry::partition_cells(*mesh, world);
   const Run  distributed = drain(grid, world, cell_owner);
 
   // Every process holds the same state, bit for bit.
@@ -112,7 +112,7 @@ main(int argc, char **argv)
   if (!rank0)
     return same_on_processes ? 0 : 1;
 
-  const Run serial = drain(grid, MPI_COMM_SELF, {});
+  const Run    serial     = drain(grid, MPI_COMM_SELF, {});
   unsigned int owned_by_1 = 0;
   for (const unsigned int o : cell_owner)
     owned_by_1 += o;
@@ -127,7 +127,8 @@ main(int argc, char **argv)
   std::cout << std::endl
             << "same iteration counts on 2 processes: "
             << (serial.iterations == distributed.iterations ? "yes" : "NO") << std::endl;
-  const double dp = relative_difference(flatten(distributed.state, 1e5), flatten(serial.state, 1e5));
+  const double dp =
+    relative_difference(flatten(distributed.state, 1e5), flatten(serial.state, 1e5));
   std::cout << "phase pressures equal to 1e-8 relative: " << (dp < 1e-8 ? "yes" : "NO")
             << std::endl;
   double mass = 0;
@@ -135,9 +136,9 @@ main(int argc, char **argv)
     mass = std::max({mass, serial.mass_defect[s], distributed.mass_defect[s]});
   std::cout << "mass defect of every step below 1e-10 on 1 and 2 processes: "
             << (mass < 1e-10 ? "yes" : "NO") << std::endl;
-  const double de = std::max(relative_difference(distributed.dissipation, serial.dissipation),
+  const double de       = std::max(relative_difference(distributed.dissipation, serial.dissipation),
                              relative_difference(distributed.boundary_work, serial.boundary_work));
-  bool positive = true;
+  bool         positive = true;
   for (const double d : distributed.dissipation)
     positive = positive && d > 0;
   std::cout << "dissipation positive and energy terms equal to 1e-8 relative: "

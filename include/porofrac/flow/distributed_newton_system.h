@@ -28,9 +28,9 @@ namespace porofrac
     class DistributedNewtonSystem
     {
     public:
-      DistributedNewtonSystem(const MPI_Comm                  communicator,
-                              const dealii::SparsityPattern  &sparsity,
-                              const dealii::IndexSet         &owned);
+      DistributedNewtonSystem(const MPI_Comm                 communicator,
+                              const dealii::SparsityPattern &sparsity,
+                              const dealii::IndexSet        &owned);
 
       /// Sums @p v over the processes, in place (each entry is assembled by one of them).
       void
@@ -50,9 +50,9 @@ namespace porofrac
       const MPI_Comm communicator;
 
     private:
-      const dealii::IndexSet               owned;
+      const dealii::IndexSet                 owned;
       dealii::TrilinosWrappers::SparseMatrix matrix;
-      MumpsFactorization                   lu;
+      MumpsFactorization                     lu;
     };
   } // namespace flow
 } // namespace porofrac
