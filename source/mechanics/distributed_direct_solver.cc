@@ -59,7 +59,8 @@ namespace porofrac
           const unsigned int changed =
             Utilities::MPI::max(n_changed_faces, system.get_communicator());
           if (factorized && reuse_iterations > 0 && dim * changed < reuse_iterations &&
-              try_gmres_on_old_factors(rhs, x))
+              this->solve_with_old_factors(
+                jacobian.matrix(), OldFactors{lu}, rhs, x, reuse_iterations))
             return;
           factorize(rows);
           Timer clock;
@@ -91,30 +92,6 @@ namespace porofrac
             lu.solve(dst, src);
           }
         };
-
-        /// GMRES (right-preconditioned, relative residual 1e-12) on the assembled Jacobian with
-        /// the last factors; false if it needs more than reuse_iterations steps.
-        bool
-        try_gmres_on_old_factors(const VectorType &rhs, VectorType &x)
-        {
-          Timer                   clock;
-          SolverControl           control(reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
-          SolverGMRES<VectorType> gmres(
-            control, typename SolverGMRES<VectorType>::AdditionalData(reuse_iterations + 2, true));
-          x         = 0;
-          bool done = false;
-          try
-            {
-              gmres.solve(jacobian.matrix(), x, rhs, OldFactors{lu});
-              done = true;
-              ++this->stats.reused_factorizations;
-            }
-          catch (const SolverControl::NoConvergence &)
-            {
-            }
-          this->stats.time_solves += clock.wall_time();
-          return done;
-        }
 
         void
         factorize(const FaceRows<dim> &rows)

@@ -59,31 +59,6 @@ namespace porofrac
 
 
     template <int dim>
-    bool
-    FullSystemSolver<dim>::try_gmres_on_old_factors(const Vector<double> &rhs, Vector<double> &x)
-    {
-      Timer                       clock;
-      SolverControl               control(reuse_iterations, 1e-12 * rhs.l2_norm(), false, false);
-      SolverGMRES<Vector<double>> gmres(
-        control, SolverGMRES<Vector<double>>::AdditionalData(reuse_iterations + 2, true));
-      x         = 0;
-      bool done = false;
-      try
-        {
-          gmres.solve(system_matrix, x, rhs, *factorization);
-          done = true;
-          ++this->stats.reused_factorizations;
-        }
-      catch (const SolverControl::NoConvergence &)
-        {
-        }
-      this->stats.time_solves += clock.wall_time();
-      return done;
-    }
-
-
-
-    template <int dim>
     void
     FullSystemSolver<dim>::factorize_and_solve(const FaceRows<dim>  &rows,
                                                const Vector<double> &rhs,
@@ -132,7 +107,7 @@ namespace porofrac
         }
       assemble(rows);
       if (factorization && reuse_iterations > 0 && dim * n_changed_faces < reuse_iterations &&
-          try_gmres_on_old_factors(rhs, x))
+          this->solve_with_old_factors(system_matrix, *factorization, rhs, x, reuse_iterations))
         return;
       factorize_and_solve(rows, rhs, x);
     }

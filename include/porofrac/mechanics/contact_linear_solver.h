@@ -5,6 +5,8 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/base/registry.h>
@@ -87,6 +89,39 @@ namespace porofrac
       }
 
     protected:
+      /**
+       * GMRES (right-preconditioned, relative residual 1e-12, at most @p max_steps steps) on
+       * @p matrix with older LU factors @p factors (anything with vmult) as preconditioner, for
+       * a Jacobian whose face rows changed on a few faces only; counted as a reused
+       * factorization. False if it needs more steps (then the caller refactorizes).
+       */
+      template <typename MatrixType, typename Factors>
+      bool
+      solve_with_old_factors(const MatrixType  &matrix,
+                             const Factors     &factors,
+                             const VectorType  &rhs,
+                             VectorType        &x,
+                             const unsigned int max_steps)
+      {
+        dealii::Timer                   clock;
+        dealii::SolverControl           control(max_steps, 1e-12 * rhs.l2_norm(), false, false);
+        dealii::SolverGMRES<VectorType> gmres(
+          control, typename dealii::SolverGMRES<VectorType>::AdditionalData(max_steps + 2, true));
+        x         = 0;
+        bool done = false;
+        try
+          {
+            gmres.solve(matrix, x, rhs, factors);
+            done = true;
+            ++stats.reused_factorizations;
+          }
+        catch (const dealii::SolverControl::NoConvergence &)
+          {
+          }
+        stats.time_solves += clock.wall_time();
+        return done;
+      }
+
       ContactLinearSolverStatistics stats;
     };
 

@@ -46,8 +46,6 @@ namespace porofrac
       /// system_matrix = constrained K + B^T + the face rows.
       void
       assemble(const FaceRows<dim> &rows);
-      bool
-      try_gmres_on_old_factors(const Vector<double> &rhs, Vector<double> &x);
       void
       factorize_and_solve(const FaceRows<dim> &rows, const Vector<double> &rhs, Vector<double> &x);
 
