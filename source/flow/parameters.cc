@@ -140,6 +140,12 @@ namespace porofrac
                           Patterns::Double(),
                           "Delta t_max in dt_{k+1/2} = min(rho dt_{k-1/2}, Delta t_max) (s).");
         prm.declare_entry("Time step growth", "1.1", Patterns::Double(), "rho (-).");
+        prm.declare_entry("Maximum time steps",
+                          "100000",
+                          Patterns::Integer(1),
+                          "A deck whose time-step rule (initial step, growth, maximum step) "
+                          "needs more steps than this to reach the final time is refused before "
+                          "any solve; raise it when so many steps are meant.");
         prm.declare_entry("Maximum time step cuts",
                           "20",
                           Patterns::Integer(0),
@@ -302,12 +308,13 @@ namespace porofrac
       damaged_layer_porosity  = prm.get_double(fracture, "Damaged layer porosity");
       reference_pressure      = prm.get_double(flow, "Reference pressure");
 
-      stepping.final_time   = prm.get_double(flow, "Final time");
-      stepping.initial_step = prm.get_double(flow, "Initial time step");
-      stepping.maximum_step = prm.get_double(flow, "Maximum time step");
-      stepping.growth       = prm.get_double(flow, "Time step growth");
-      stepping.maximum_cuts = prm.get_integer(flow, "Maximum time step cuts");
-      stepping.output_every = prm.get_integer(flow, "Output every");
+      stepping.final_time    = prm.get_double(flow, "Final time");
+      stepping.initial_step  = prm.get_double(flow, "Initial time step");
+      stepping.maximum_step  = prm.get_double(flow, "Maximum time step");
+      stepping.growth        = prm.get_double(flow, "Time step growth");
+      stepping.maximum_cuts  = prm.get_integer(flow, "Maximum time step cuts");
+      stepping.output_every  = prm.get_integer(flow, "Output every");
+      stepping.maximum_steps = prm.get_integer(flow, "Maximum time steps");
 
       newton.max_iterations         = prm.get_integer(flow, "Maximum Newton iterations");
       newton.residual_tolerance     = prm.get_double(flow, "Residual tolerance");
@@ -344,16 +351,17 @@ namespace porofrac
       check_input(stepping.growth >= 1, "Flow/Time step growth", "must be >= 1");
       // A configuration that cannot reach the final time in a sane number of steps is bad input.
       double t = 0, dt = std::min(stepping.initial_step, stepping.maximum_step);
-      for (unsigned int k = 0; k < 1000000 && t < stepping.final_time; ++k)
+      for (unsigned int k = 0; k < stepping.maximum_steps && t < stepping.final_time; ++k)
         {
           t += dt;
           dt = std::min(stepping.growth * dt, stepping.maximum_step);
         }
       check_input(t >= stepping.final_time,
                   "Flow/Maximum time step",
-                  "the final time " + io::to_text(stepping.final_time) +
-                    " s is not reached in 10^6 steps with this initial step, growth and "
-                    "maximum step");
+                  "the final time " + io::to_text(stepping.final_time) + " s is not reached in " +
+                    std::to_string(stepping.maximum_steps) +
+                    " steps (Flow/Maximum time steps) with this initial step, growth and "
+                    "maximum step; raise Flow/Maximum time steps if so many steps are meant");
 
       check_input(newton.saturation_chop < 1, "Flow/Saturation chop", "must be below 1");
       check_input(SerialLinearSolverRegistry::instance().has(newton.linear_solver),

@@ -75,6 +75,8 @@ namespace porofrac
       double       growth       = 1.1; ///< rho
       unsigned int maximum_cuts = 20;
       unsigned int output_every = 1;
+      /// Steps the rule may take to the final time (without cuts) before the deck is refused.
+      unsigned int maximum_steps = 100000;
     };
 
     /// Dirichlet phase pressures (p^w, p^nw) in Pa by boundary id.
