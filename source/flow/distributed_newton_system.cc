@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/array_view.h>
 
-#include <deal.II/lac/trilinos_vector.h>
-
 #include <porofrac/flow/distributed_newton_system.h>
 
 #include <vector>
@@ -21,6 +19,8 @@ namespace porofrac
         , lu("Flow: the Newton system")
     {
       matrix.reinit(owned, owned, sparsity, communicator);
+      b.reinit(owned, communicator);
+      x.reinit(owned, communicator);
     }
 
 
@@ -53,7 +53,6 @@ namespace porofrac
           matrix.set(row, columns.size(), columns.data(), values.data());
         }
       matrix.compress(VectorOperation::insert);
-      TrilinosWrappers::MPI::Vector b(owned, communicator), x(owned, communicator);
       for (const auto row : owned)
         b[row] = residual(row);
       b.compress(VectorOperation::insert);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <memory>
+#include <numeric>
 #include <sstream>
 
 namespace porofrac
@@ -46,14 +47,20 @@ namespace porofrac
     void
     TwoPhaseSolver<dim>::number_unknowns(const std::vector<unsigned int> &node_owner)
     {
+      // Unknowns process by process (node order within each): one contiguous range each.
+      std::vector<unsigned int> order(grid.n_nodes());
+      std::iota(order.begin(), order.end(), 0u);
+      if (!node_owner.empty())
+        std::stable_sort(order.begin(),
+                         order.end(),
+                         [&](const unsigned int a, const unsigned int b) {
+                           return node_owner[a] < node_owner[b];
+                         });
       node_dof.assign(grid.n_nodes(), numbers::invalid_unsigned_int);
       n_free = 0;
-      const unsigned int n_ranks =
-        node_owner.empty() ? 1 : *std::max_element(node_owner.begin(), node_owner.end()) + 1;
-      for (unsigned int rank = 0; rank < n_ranks; ++rank)
-        for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-          if (!grid.is_dirichlet(i) && (node_owner.empty() || node_owner[i] == rank))
-            node_dof[i] = n_free++;
+      for (const unsigned int i : order)
+        if (!grid.is_dirichlet(i))
+          node_dof[i] = n_free++;
       DynamicSparsityPattern dsp(2 * n_free, 2 * n_free);
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         if (node_dof[i] != numbers::invalid_unsigned_int)

@@ -54,11 +54,11 @@ namespace porofrac
       /// point is refused here, since gmsh would either fail or mesh without end.
       double
       bulk_cells(const double              domain_measure,
+                 const double              plain,
                  const SampledDomain      &domain,
                  const GeometryParameters &prm,
                  const unsigned int        dim)
       {
-        const double plain = domain_measure / cell_measure(prm.mesh_size, dim);
         if (prm.size_expression.empty())
           return plain;
         std::unique_ptr<dealii::FunctionParser<3>> h_e;
@@ -103,7 +103,7 @@ namespace porofrac
             const unsigned int        dim)
       {
         const double plain  = domain_measure / cell_measure(prm.mesh_size, dim);
-        const double bulk   = bulk_cells(domain_measure, domain, prm, dim);
+        const double bulk   = bulk_cells(domain_measure, plain, domain, prm, dim);
         double       region = 0;
         for (const auto &r : parse_refinement_regions(prm.refinement_regions, dim))
           {

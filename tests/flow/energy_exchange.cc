@@ -98,12 +98,7 @@ main()
     flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0});
     flow_test::set_data(grid);
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
-    const double            pc_in = rocks[0].saturation->inverse(0.5, "test");
-    solver.matrix_dirichlet       = {{0, {{2e5 - pc_in, 2e5}}}, {1, {{1e5, 1e5}}}};
-    solver.fracture_dirichlet     = {{0, {{2e5 - rocks[1].saturation->inverse(0.9, "test"), 2e5}}}};
-    for (auto &p : solver.state)
-      p = {{1e5, 1e5}};
-    solver.apply_dirichlet(solver.state);
+    flow_test::set_drainage(solver, rocks);
     std::vector<double> phi_base(grid.n_matrix_cells, 0.2), p_E_ref(grid.n_matrix_cells, 1e5);
     const auto          storage = std::make_shared<coupling::BiotStorage<2>>(
       grid, rocks[flow::matrix_rock].saturation, 1e-7, false, p_E_ref, phi_base);

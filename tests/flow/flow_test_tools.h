@@ -79,6 +79,19 @@ namespace flow_test
     grid.normal_transmissibility = 1e-10;
     grid.update_transmissibilities();
   }
+
+  /// Drainage from the left (boundary 0: matrix s_nw = 0.5, fractures s_nw = 0.9, p_nw = 2e5)
+  /// to the right (boundary 1: water at 1e5 Pa), water at 1e5 Pa inside.
+  inline void
+  set_drainage(flow::TwoPhaseSolver<2> &solver, const std::array<flow::RockType, 2> &rocks)
+  {
+    const double pc_in        = rocks[0].saturation->inverse(0.5, "test");
+    solver.matrix_dirichlet   = {{0, {{2e5 - pc_in, 2e5}}}, {1, {{1e5, 1e5}}}};
+    solver.fracture_dirichlet = {{0, {{2e5 - rocks[1].saturation->inverse(0.9, "test"), 2e5}}}};
+    for (auto &p : solver.state)
+      p = {{1e5, 1e5}};
+    solver.apply_dirichlet(solver.state);
+  }
 } // namespace flow_test
 
 #endif

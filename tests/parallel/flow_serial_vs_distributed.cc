@@ -44,12 +44,7 @@ namespace
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow::NewtonParameters());
     if (!cell_owner.empty())
       solver.distribute(communicator, grid.node_owners(cell_owner));
-    const double pc_in        = rocks[0].saturation->inverse(0.5, "test");
-    solver.matrix_dirichlet   = {{0, {{2e5 - pc_in, 2e5}}}, {1, {{1e5, 1e5}}}};
-    solver.fracture_dirichlet = {{0, {{2e5 - rocks[1].saturation->inverse(0.9, "test"), 2e5}}}};
-    for (auto &p : solver.state)
-      p = {{1e5, 1e5}};
-    solver.apply_dirichlet(solver.state);
+    flow_test::set_drainage(solver, rocks);
     Run    run;
     double dt = 2.;
     for (unsigned int step = 0; step < 12; ++step, dt *= 1.5)

@@ -8,6 +8,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/base/mumps_factorization.h>
@@ -52,7 +53,9 @@ namespace porofrac
     private:
       const dealii::IndexSet                 owned;
       dealii::TrilinosWrappers::SparseMatrix matrix;
-      MumpsFactorization                     lu;
+      /// Right-hand side and solution of the owned rows, kept between solves.
+      dealii::TrilinosWrappers::MPI::Vector b, x;
+      MumpsFactorization                    lu;
     };
   } // namespace flow
 } // namespace porofrac
