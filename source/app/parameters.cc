@@ -26,12 +26,12 @@ namespace porofrac
         "Distributed",
         "auto",
         Patterns::Selection("auto|always"),
-        "Contact mechanics and two-phase flow: 'auto' runs the distributed code (METIS "
-        "partition, Trilinos, MUMPS or the iterative solver of Mechanics/Distributed linear "
-        "solver; doc/parallel.md) when the run has more than one MPI process and the serial code "
-        "otherwise; 'always' runs the distributed code on one process too. 'mesh only' runs on "
-        "rank 0 while the other processes wait; poromechanics is not distributed yet and stops "
-        "with an error on more than one process.");
+        "'auto' runs the distributed code (METIS partition, Trilinos, MUMPS or the iterative "
+        "solver of Mechanics/Distributed linear solver; doc/parallel.md) when the run has more "
+        "than one MPI process and the serial code otherwise; 'always' runs the distributed code "
+        "on one process too. Poromechanics distributes its flow and solves the same serial "
+        "contact problem on every process; 'mesh only' runs on rank 0 while the other processes "
+        "wait.");
       prm.declare_entry("Scene name",
                         "",
                         Patterns::Anything(),

@@ -5,6 +5,7 @@
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/app/poromechanics_scene.h>
 #include <porofrac/app/time_loop.h>
+#include <porofrac/base/mpi_tools.h>
 #include <porofrac/coupling/energy_estimate.h>
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/io/pvd_writer.h>
@@ -214,9 +215,10 @@ namespace porofrac
       class CoupledRun
       {
       public:
-        CoupledRun(const PhysicsParameters      &parameters,
-                   const geometry::CutMesh<dim> &mesh,
-                   io::RunContext               &context);
+        CoupledRun(const PhysicsParameters         &parameters,
+                   const geometry::CutMesh<dim>    &mesh,
+                   io::RunContext                  &context,
+                   const std::vector<unsigned int> &cell_owner);
 
         /// The state at t = 0 (or the restored one) written, the text files open.
         void
@@ -259,9 +261,10 @@ namespace porofrac
 
 
       template <int dim>
-      CoupledRun<dim>::CoupledRun(const PhysicsParameters      &physics,
-                                  const geometry::CutMesh<dim> &mesh,
-                                  io::RunContext               &context)
+      CoupledRun<dim>::CoupledRun(const PhysicsParameters         &physics,
+                                  const geometry::CutMesh<dim>    &mesh,
+                                  io::RunContext                  &context,
+                                  const std::vector<unsigned int> &cell_owner)
           : stepper(physics.flow.stepping.final_time,
                     physics.flow.stepping.initial_step,
                     physics.flow.stepping.maximum_step,
@@ -272,10 +275,14 @@ namespace porofrac
           , parameters(physics.coupling)
           , flow(make_inner_flow_model(physics, mesh))
           , mech(mesh, physics.mechanics, context.verbose, context.timer)
-          , pm(mech, flow, parameters, context.verbose, context.timer)
+          , pm(mech, flow, parameters, context.verbose, context.timer, context.communicator)
           , pvd(context.path("poromechanics.pvd"))
           , checkpoints(context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"})
       {
+        // Distributed: the flow's Newton systems are shared, the contact problem is solved by
+        // every process (coupling::Poromechanics).
+        if (context.communicator != MPI_COMM_SELF)
+          flow.solver->distribute(context.communicator, flow.grid->node_owners(cell_owner));
         context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
         mech.setup();
         context.summary["n_dofs_mechanics"] = mech.n_dofs();
@@ -386,7 +393,7 @@ namespace porofrac
       void
       CoupledRun<dim>::output(const unsigned int step, const double time)
       {
-        if (context.output_format == "none")
+        if (context.output_format == "none" || !context.writes_files())
           return;
         TimerOutput::Scope timer(context.timer, "Coupling: output");
         const std::string  name = "poromechanics-" + Utilities::int_to_string(step, 5);
@@ -453,7 +460,10 @@ namespace porofrac
         scene.flow          = &flow;
         scene.poromechanics = &pm;
         scene.time          = stepper.time();
-        run_postprocessors(scene, context);
+        collectively(context.communicator, [&]() {
+          if (context.writes_files())
+            run_postprocessors(scene, context);
+        });
       }
     } // namespace
 
@@ -461,11 +471,12 @@ namespace porofrac
 
     template <int dim>
     void
-    run_poromechanics_scene(const PhysicsParameters      &parameters,
-                            const geometry::CutMesh<dim> &mesh,
-                            io::RunContext               &context)
+    run_poromechanics_scene(const PhysicsParameters         &parameters,
+                            const geometry::CutMesh<dim>    &mesh,
+                            io::RunContext                  &context,
+                            const std::vector<unsigned int> &cell_owner)
     {
-      CoupledRun<dim> run(parameters, mesh, context);
+      CoupledRun<dim> run(parameters, mesh, context, cell_owner);
       run.start();
       run_time_loop(
         run.stepper,
@@ -473,17 +484,20 @@ namespace porofrac
         [&](const double dt) { return run.attempt(dt); },
         [&]() { run.accept(); },
         [&](const bool restore_first) { run.write_accepted_state(restore_first); },
-        context.progress);
+        context.progress,
+        context.communicator);
       run.finish(parameters, mesh);
     }
 
     template void
     run_poromechanics_scene(const PhysicsParameters &,
                             const geometry::CutMesh<2> &,
-                            io::RunContext &);
+                            io::RunContext &,
+                            const std::vector<unsigned int> &);
     template void
     run_poromechanics_scene(const PhysicsParameters &,
                             const geometry::CutMesh<3> &,
-                            io::RunContext &);
+                            io::RunContext &,
+                            const std::vector<unsigned int> &);
   } // namespace app
 } // namespace porofrac

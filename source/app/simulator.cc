@@ -32,31 +32,14 @@ namespace porofrac
   {
     namespace
     {
-      /// Whether the scene runs the distributed code on all processes: contact mechanics and
-      /// two-phase flow. 'mesh only' runs on rank 0 while the other processes wait, and
-      /// poromechanics refuses to run on more than one process (check_distributable).
+      /// Whether the scene runs the distributed code on all processes: contact mechanics,
+      /// two-phase flow and poromechanics. 'mesh only' runs on rank 0 while the other processes
+      /// wait.
       bool
       distributed_scene(dealii::ParameterHandler &prm, const std::string &physics)
       {
         const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-        return (physics == "contact mechanics" || physics == "two-phase flow") &&
-               (n > 1 || prm.get("Distributed") == "always");
-      }
-
-      /// Throws the same InputError on every process if the deck's physics has no distributed
-      /// code and the run has more than one MPI process (poromechanics: running it on rank 0
-      /// only would leave the other processes idle without saying so).
-      void
-      check_distributable(const std::string &physics)
-      {
-        const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-        check_input(n == 1 || physics != "poromechanics",
-                    "Physics",
-                    "'" + physics + "' cannot run on " + std::to_string(n) +
-                      " MPI processes: the coupled flow and mechanics (fixed point or "
-                      "Newton-Krylov over the flow and the contact mechanics) is not distributed "
-                      "yet; run it on one process (without mpirun, or mpirun -np 1). Contact "
-                      "mechanics and two-phase flow run distributed (doc/parallel.md)");
+        return physics != "mesh only" && (n > 1 || prm.get("Distributed") == "always");
       }
 
       /// Takes the output directory on rank 0 of @p communicator (doc: io::OutputDirectory); the
@@ -198,7 +181,7 @@ namespace porofrac
           }
         else if (physics == "contact mechanics")
           run_contact_mechanics_scene(physics_parameters, *mesh, context);
-        else if (physics == "two-phase flow")
+        else if (physics == "two-phase flow" || physics == "poromechanics")
           {
             std::vector<unsigned int> cell_owner;
             if (context.communicator != MPI_COMM_SELF)
@@ -206,10 +189,11 @@ namespace porofrac
                 TimerOutput::Scope t(context.timer, "Geometry: partition and distribution");
                 cell_owner = geometry::partition_cells(*mesh, context.communicator);
               }
-            run_two_phase_flow_scene(physics_parameters, *mesh, context, cell_owner);
+            if (physics == "two-phase flow")
+              run_two_phase_flow_scene(physics_parameters, *mesh, context, cell_owner);
+            else
+              run_poromechanics_scene(physics_parameters, *mesh, context, cell_owner);
           }
-        else if (physics == "poromechanics")
-          run_poromechanics_scene(physics_parameters, *mesh, context);
       }
     } // namespace
 
@@ -245,7 +229,6 @@ namespace porofrac
                     (options.checkpoint_every_steps == 0 && options.checkpoint_every_seconds == 0),
                   "--checkpoint-every",
                   "only time-dependent scenes (two-phase flow, poromechanics) write checkpoints");
-      check_distributable(physics);
       // A scene that is not distributed runs on rank 0; the other processes wait in main().
       const MPI_Comm communicator =
         distributed_scene(prm, physics) ? MPI_COMM_WORLD : MPI_COMM_SELF;

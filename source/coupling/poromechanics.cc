@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/mpi_tools.h>
 #include <porofrac/coupling/closure.h>
 #include <porofrac/coupling/poromechanics.h>
 #include <porofrac/flow/flow_output.h>
@@ -16,12 +17,14 @@ namespace porofrac
                                       flow::FlowModel<dim>           &flow,
                                       const CouplingParameters       &parameters,
                                       ConditionalOStream             &verbose,
-                                      TimerOutput                    &timer)
+                                      TimerOutput                    &timer,
+                                      const MPI_Comm                  communicator)
         : mechanics(mechanics)
         , flow(flow)
         , parameters(parameters)
         , verbose(verbose)
         , timer(timer)
+        , communicator(communicator)
         , n_matrix(flow.grid->n_matrix_cells)
         , n_fracture(flow.grid->n_fracture_cells)
     {
@@ -71,12 +74,15 @@ namespace porofrac
     Poromechanics<dim>::solve_mechanics(const Vector<double> &x)
     {
       TimerOutput::Scope t(timer, "Coupling: contact mechanics");
-      mechanics.set_equivalent_pressures(std::vector<double>(x.begin(), x.begin() + n_matrix),
-                                         std::vector<double>(x.begin() + n_matrix, x.end()),
-                                         parameters.biot_coefficient);
-      // Warm start from the previous solve (paper 5.3: the previous time step's solution).
-      const auto &statistics = mechanics.solve(/*warm_start=*/true);
-      report.mechanics_iterations += statistics.iterations;
+      // A contact failure on one process is thrown on all of them.
+      collectively(communicator, [&]() {
+        mechanics.set_equivalent_pressures(std::vector<double>(x.begin(), x.begin() + n_matrix),
+                                           std::vector<double>(x.begin() + n_matrix, x.end()),
+                                           parameters.biot_coefficient);
+        // Warm start from the previous solve (paper 5.3: the previous time step's solution).
+        const auto &statistics = mechanics.solve(/*warm_start=*/true);
+        report.mechanics_iterations += statistics.iterations;
+      });
     }
 
 
@@ -91,6 +97,11 @@ namespace porofrac
         y[K] = div[K];
       for (unsigned int f = 0; f < n_fracture; ++f)
         y[n_matrix + f] = mechanics.frame(f)[0] * mechanics.jump(f);
+      if (communicator != MPI_COMM_SELF && Utilities::MPI::n_mpi_processes(communicator) > 1)
+        {
+          const int ierr = MPI_Bcast(y.begin(), y.size(), MPI_DOUBLE, 0, communicator);
+          AssertThrowMPI(ierr);
+        }
       return y;
     }
 

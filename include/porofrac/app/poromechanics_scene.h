@@ -6,6 +6,8 @@
 #include <porofrac/geometry/cut_mesh.h>
 #include <porofrac/io/run_context.h>
 
+#include <vector>
+
 namespace porofrac
 {
   namespace app
@@ -16,12 +18,18 @@ namespace porofrac
      * energy estimate (19) among its columns), fractures.csv rows at t = 0, at the fracture
      * output times and at the final time, the field series poromechanics-NNNNN +
      * poromechanics.pvd, and the postprocessors the deck asks for.
+     *
+     * On the processes of a distributed context (context.communicator), @p cell_owner gives
+     * the process of every cell: the flow's Newton systems are distributed as in a two-phase
+     * flow scene, every process solves the same serial contact problem, and rank 0 writes the
+     * files (doc/parallel.md).
      */
     template <int dim>
     void
-    run_poromechanics_scene(const PhysicsParameters      &parameters,
-                            const geometry::CutMesh<dim> &mesh,
-                            io::RunContext               &context);
+    run_poromechanics_scene(const PhysicsParameters         &parameters,
+                            const geometry::CutMesh<dim>    &mesh,
+                            io::RunContext                  &context,
+                            const std::vector<unsigned int> &cell_owner = {});
   } // namespace app
 } // namespace porofrac
 

@@ -56,7 +56,9 @@ namespace porofrac
       {
         failure = {int(FailureKind::internal), "", e.what()};
       }
-    const unsigned int n = MPI::n_mpi_processes(communicator);
+    // MPI_COMM_SELF needs no vote (and no MPI_Init: serial programs call this too).
+    const unsigned int n =
+      communicator == MPI_COMM_SELF ? 1 : MPI::n_mpi_processes(communicator);
     if (n > 1)
       {
         const bool         failed = std::get<0>(failure) != int(FailureKind::none);

@@ -3,6 +3,7 @@
 #define POROFRAC_COUPLING_POROMECHANICS_H
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <deal.II/lac/vector.h>
@@ -46,6 +47,13 @@ namespace porofrac
      *
      * Numbering: matrix quantities per active cell index (= flow matrix cells), fracture
      * quantities per CutMesh fracture face index (= flow fracture cells n_matrix + f).
+     *
+     * On the processes of @p communicator (a flow distributed with TwoPhaseSolver::distribute()
+     * over them): every process solves the same serial contact problem, a contact failure on one
+     * process ends the map evaluation on all, and the displacement measures the flow sees
+     * (div u per cell, [u]_n per face) are rank 0's, so that the replicated flow state and the
+     * fixed-point vectors stay the same on every process even if their linear algebra differed
+     * in round-off.
      */
     template <int dim>
     class Poromechanics
@@ -55,7 +63,8 @@ namespace porofrac
                     flow::FlowModel<dim>           &flow,
                     const CouplingParameters       &parameters,
                     ConditionalOStream             &verbose,
-                    TimerOutput                    &timer);
+                    TimerOutput                    &timer,
+                    const MPI_Comm                  communicator = MPI_COMM_SELF);
 
       /// t = 0: p_E^0 of the initial pressures, (u^0, lambda^0) the contact solution with p_E^0
       /// (paper, after (11d)), phi = phi_0, d_f = d_0 - [u^0]_n.
@@ -133,7 +142,7 @@ namespace porofrac
 
       void
       solve_mechanics(const Vector<double> &p_E_all);
-      /// (div u per cell, [u]_n per face) of the current mechanics solution.
+      /// (div u per cell, [u]_n per face) of the current mechanics solution (rank 0's; collective).
       Vector<double>
       displacement_measures() const;
       /// Porosity base phi_0 + b (div u - div u^0) and apertures d_0 - [u]_n from y.
@@ -150,6 +159,7 @@ namespace porofrac
       std::shared_ptr<BiotStorage<dim>> storage;
       ConditionalOStream               &verbose;
       TimerOutput                      &timer;
+      const MPI_Comm                    communicator;
       const unsigned int                n_matrix, n_fracture;
 
       double         dt = 0;
