@@ -57,8 +57,7 @@ namespace porofrac
         failure = {int(FailureKind::internal), "", e.what()};
       }
     // MPI_COMM_SELF needs no vote (and no MPI_Init: serial programs call this too).
-    const unsigned int n =
-      communicator == MPI_COMM_SELF ? 1 : MPI::n_mpi_processes(communicator);
+    const unsigned int n = communicator == MPI_COMM_SELF ? 1 : MPI::n_mpi_processes(communicator);
     if (n > 1)
       {
         const bool         failed = std::get<0>(failure) != int(FailureKind::none);
