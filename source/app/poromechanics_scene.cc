@@ -441,16 +441,22 @@ namespace porofrac
         cpl["fixed_point"]   = std::string(
           parameters.variable == coupling::CouplingVariable::displacement ? "displacement" :
                                                                             "equivalent pressure");
-        cpl["method"]                              = parameters.fixed_point.method;
-        cpl["iterations"]                          = totals.coupling;
-        cpl["iterations_max_per_step"]             = totals.coupling_max_per_step;
-        cpl["map_evaluations"]                     = totals.maps;
-        cpl["gmres_iterations"]                    = totals.gmres;
-        summary["coupling"]                        = cpl;
-        summary["n_time_steps"]                    = stepper.step_number();
-        summary["final_time"]                      = stepper.time();
-        summary["time_step_cuts"]                  = totals.cuts;
-        summary["flow_newton_iterations"]          = totals.flow;
+        cpl["method"]                     = parameters.fixed_point.method;
+        cpl["iterations"]                 = totals.coupling;
+        cpl["iterations_max_per_step"]    = totals.coupling_max_per_step;
+        cpl["map_evaluations"]            = totals.maps;
+        cpl["gmres_iterations"]           = totals.gmres;
+        summary["coupling"]               = cpl;
+        summary["n_time_steps"]           = stepper.step_number();
+        summary["final_time"]             = stepper.time();
+        summary["time_step_cuts"]         = totals.cuts;
+        summary["flow_newton_iterations"] = totals.flow;
+        summary["flow_linear_solver"] =
+          flow::linear_solver_summary(pm.flow.solver->linear_solver_name(),
+                                      pm.flow.solver->linear_statistics());
+        flow::report_linear_solver(pm.flow.solver->linear_solver_name(),
+                                   pm.flow.solver->linear_statistics(),
+                                   context.report);
         summary["mass_balance_error_max"]          = totals.mass_error_max;
         summary["energy_inequality_violation_max"] = energy->max_violation();
         summary["mean_fracture_width"]             = pm.mean_fracture_width();

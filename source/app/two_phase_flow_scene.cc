@@ -314,6 +314,11 @@ namespace porofrac
         summary["flow_newton_iterations"]              = totals.newton;
         summary["flow_newton_iterations_max_per_step"] = totals.max_step_newton;
         summary["time_step_cuts"]                      = totals.cuts;
+        summary["flow_linear_solver"] =
+          flow::linear_solver_summary(solver.linear_solver_name(), solver.linear_statistics());
+        flow::report_linear_solver(solver.linear_solver_name(),
+                                   solver.linear_statistics(),
+                                   context.report);
 
         SceneView<dim> scene{mesh, parameters};
         scene.flow = &model;

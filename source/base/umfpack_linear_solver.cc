@@ -35,6 +35,7 @@ namespace porofrac
             const double /*relative_tolerance*/) override
       {
         x = b;
+        ++stats.solves;
         try
           {
             lu.solve(x);

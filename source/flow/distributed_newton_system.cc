@@ -13,11 +13,18 @@ namespace porofrac
 
     DistributedNewtonSystem::DistributedNewtonSystem(const MPI_Comm         communicator,
                                                      const SparsityPattern &sparsity,
-                                                     const IndexSet        &owned)
+                                                     const IndexSet        &owned,
+                                                     const std::string     &solver_name,
+                                                     const unsigned int     max_iterations)
         : communicator(communicator)
         , owned(owned)
-        , lu("Flow: the Newton system")
     {
+      DistributedLinearSolverOptions options;
+      options.block_size     = 2; // (p^w, p^nw) of a node, consecutive (TwoPhaseSolver::dof)
+      options.max_iterations = max_iterations;
+      options.what           = "Flow: the Newton system";
+      solver =
+        create_distributed_linear_solver(solver_name, "Flow/Distributed linear solver", options);
       matrix.reinit(owned, owned, sparsity, communicator);
       b.reinit(owned, communicator);
       x.reinit(owned, communicator);
@@ -37,7 +44,8 @@ namespace porofrac
     void
     DistributedNewtonSystem::solve(const SparseMatrix<double> &jacobian,
                                    const Vector<double>       &residual,
-                                   Vector<double>             &update)
+                                   Vector<double>             &update,
+                                   const double                relative_tolerance)
     {
       std::vector<types::global_dof_index> columns;
       std::vector<double>                  values;
@@ -56,8 +64,8 @@ namespace porofrac
       for (const auto row : owned)
         b[row] = residual(row);
       b.compress(VectorOperation::insert);
-      lu.factorize(matrix);
-      lu.solve(x, b);
+      solver->initialize(matrix);
+      solver->solve(b, x, relative_tolerance);
       update = 0;
       for (const auto row : owned)
         update(row) = x[row];

@@ -56,6 +56,34 @@ namespace porofrac
       return den > 0 ? num / den : 0.;
     }
 
+    io::Json
+    linear_solver_summary(const std::string &name, const LinearSolverStatistics &statistics)
+    {
+      io::Json s      = io::Json::object();
+      s["name"]       = name;
+      s["solves"]     = statistics.solves;
+      s["iterations"] = statistics.iterations;
+      s["iterations_per_solve"] =
+        statistics.solves > 0 ? double(statistics.iterations) / statistics.solves : 0.;
+      s["direct_fallbacks"] = statistics.direct_fallbacks;
+      return s;
+    }
+
+    void
+    report_linear_solver(const std::string            &name,
+                         const LinearSolverStatistics &statistics,
+                         std::ostream                 &report)
+    {
+      if (statistics.iterations == 0)
+        return;
+      const double per_solve = double(statistics.iterations) / statistics.solves;
+      report << "Flow: linear solver " << name
+             << ", direct fallbacks: " << statistics.direct_fallbacks << std::endl
+             << "Flow: linear solver " << name
+             << ", below 30 Krylov iterations per solve: " << (per_solve < 30 ? "yes" : "NO")
+             << std::endl;
+    }
+
 #define POROFRAC_INSTANTIATE(dim)                                                                  \
   template geometry::CellFields matrix_fields(const TwoPhaseSolver<dim> &, const TpfaGrid<dim> &); \
   template geometry::FractureFields fracture_fields(const TwoPhaseSolver<dim> &,                   \

@@ -2,6 +2,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <porofrac/base/distributed_linear_solver.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/linear_solver.h>
 #include <porofrac/base/registry.h>
@@ -227,6 +228,29 @@ namespace porofrac
                           Patterns::Selection(solvers.selection()),
                           "Solver of the linear system of each Newton iteration; " +
                             solvers.documentation());
+        const auto &distributed = DistributedLinearSolverRegistry::instance();
+        prm.declare_entry("Distributed linear solver",
+                          "mumps",
+                          Patterns::Selection(distributed.selection()),
+                          "Solver of the Newton systems when the flow runs distributed "
+                          "(General/Distributed; Linear solver is the serial code's); " +
+                            distributed.documentation());
+        prm.declare_entry("Linear solver tolerance",
+                          "1e-4",
+                          Patterns::Double(),
+                          "Iterative linear solvers: the relative residual of each Newton step is "
+                          "min(this, Linear solver forcing x |R|/|R_0|), at least 1e-12 "
+                          "(inexact Newton steps; direct solvers ignore it).");
+        prm.declare_entry("Linear solver forcing",
+                          "1",
+                          Patterns::Double(),
+                          "Iterative linear solvers: see Linear solver tolerance.");
+        prm.declare_entry("Max linear iterations",
+                          "200",
+                          Patterns::Integer(1),
+                          "Iterative linear solvers: Krylov iterations per Newton step before "
+                          "the step is solved by MUMPS instead (counted in summary.json, "
+                          "flow_linear_direct_fallbacks).");
       }
 
       std::array<double, 2>
@@ -316,18 +340,22 @@ namespace porofrac
       stepping.output_every  = prm.get_integer(flow, "Output every");
       stepping.maximum_steps = prm.get_integer(flow, "Maximum time steps");
 
-      newton.max_iterations         = prm.get_integer(flow, "Maximum Newton iterations");
-      newton.residual_tolerance     = prm.get_double(flow, "Residual tolerance");
-      newton.update_tolerance       = prm.get_double(flow, "Update tolerance");
-      newton.mass_tolerance         = prm.get_double(flow, "Mass balance tolerance");
-      newton.capillary_chop         = prm.get_double(flow, "Capillary chop");
-      newton.saturation_chop        = prm.get_double(flow, "Saturation chop");
-      newton.stagnation_iterations  = prm.get_integer(flow, "Stagnation iterations");
-      newton.entry_slope_iterations = prm.get_integer(flow, "Entry slope iterations");
-      newton.entry_slope            = prm.get_bool(flow, "Entry slope in Jacobian");
-      newton.capillary_bound        = prm.get_bool(flow, "Capillary pressure bound");
-      newton.line_search            = prm.get_bool(flow, "Line search");
-      newton.linear_solver          = prm.get(flow, "Linear solver");
+      newton.max_iterations            = prm.get_integer(flow, "Maximum Newton iterations");
+      newton.residual_tolerance        = prm.get_double(flow, "Residual tolerance");
+      newton.update_tolerance          = prm.get_double(flow, "Update tolerance");
+      newton.mass_tolerance            = prm.get_double(flow, "Mass balance tolerance");
+      newton.capillary_chop            = prm.get_double(flow, "Capillary chop");
+      newton.saturation_chop           = prm.get_double(flow, "Saturation chop");
+      newton.stagnation_iterations     = prm.get_integer(flow, "Stagnation iterations");
+      newton.entry_slope_iterations    = prm.get_integer(flow, "Entry slope iterations");
+      newton.entry_slope               = prm.get_bool(flow, "Entry slope in Jacobian");
+      newton.capillary_bound           = prm.get_bool(flow, "Capillary pressure bound");
+      newton.line_search               = prm.get_bool(flow, "Line search");
+      newton.linear_solver             = prm.get(flow, "Linear solver");
+      newton.distributed_linear_solver = prm.get(flow, "Distributed linear solver");
+      newton.linear_tolerance          = prm.get_double(flow, "Linear solver tolerance");
+      newton.linear_forcing            = prm.get_double(flow, "Linear solver forcing");
+      newton.max_linear_iterations     = prm.get_integer(flow, "Max linear iterations");
 
       const std::vector<std::string> bc = {"Flow", "Boundary conditions"};
       matrix_dirichlet                  = parse_dirichlet(prm.get(bc, "Matrix"),
@@ -368,6 +396,15 @@ namespace porofrac
                   "Flow/Linear solver",
                   "'" + newton.linear_solver + "' is not one of " +
                     SerialLinearSolverRegistry::instance().selection());
+
+      check_input(DistributedLinearSolverRegistry::instance().has(newton.distributed_linear_solver),
+                  "Flow/Distributed linear solver",
+                  "'" + newton.distributed_linear_solver + "' is not one of " +
+                    DistributedLinearSolverRegistry::instance().selection());
+      check_input(newton.linear_tolerance > 0 && newton.linear_tolerance < 1,
+                  "Flow/Linear solver tolerance",
+                  "must lie in (0, 1)");
+      check_input(newton.linear_forcing > 0, "Flow/Linear solver forcing", "must be positive");
 
       check_input(porosity > 0 && porosity < 1, "Flow/Matrix/Porosity", "must lie in (0, 1)");
       check_input(permeability > 0, "Flow/Matrix/Permeability", "must be positive");

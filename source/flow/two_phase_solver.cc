@@ -100,7 +100,11 @@ namespace porofrac
             owned.add_range(dof(i, 0), dof(i, 1) + 1);
           }
       owned.compress();
-      distribution = std::make_unique<DistributedNewtonSystem>(communicator, sparsity, owned);
+      distribution = std::make_unique<DistributedNewtonSystem>(communicator,
+                                                               sparsity,
+                                                               owned,
+                                                               parameters.distributed_linear_solver,
+                                                               parameters.max_linear_iterations);
     }
 
 
@@ -525,25 +529,24 @@ namespace porofrac
     bool
     TwoPhaseSolver<dim>::solve_linear_system(const Vector<double> &residual,
                                              Vector<double>       &update,
+                                             const double          tolerance,
                                              std::string          &failure)
     {
       std::unique_ptr<TimerOutput::Scope> t;
       if (timer)
-        t = std::make_unique<TimerOutput::Scope>(*timer,
-                                                 "Flow: linear solve (" +
-                                                   (distribution ? std::string("mumps") :
-                                                                   linear_solver->name()) +
-                                                   ")");
+        t =
+          std::make_unique<TimerOutput::Scope>(*timer,
+                                               "Flow: linear solve (" + linear_solver_name() + ")");
       // A singular or failed factorisation is a failed step (converged = false), never an
       // exception: the caller cuts the time step.
       try
         {
           if (distribution)
-            distribution->solve(jacobian, residual, update);
+            distribution->solve(jacobian, residual, update, tolerance);
           else
             {
               linear_solver->initialize(jacobian);
-              linear_solver->solve(residual, update, parameters.linear_tolerance);
+              linear_solver->solve(residual, update, tolerance);
             }
         }
       catch (const SolverFailure &e)
@@ -732,7 +735,11 @@ namespace porofrac
               result.failure = msg.str();
               break;
             }
-          if (!solve_linear_system(residual, update, result.failure))
+          // Inexact Newton: the linear residual shrinks with the nonlinear one.
+          const double tolerance =
+            std::max(1e-12,
+                     std::min(parameters.linear_tolerance, parameters.linear_forcing * r / r0));
+          if (!solve_linear_system(residual, update, tolerance, result.failure))
             return result;
           const State  previous        = parameters.line_search ? state : State();
           const double previous_update = last_update;

@@ -25,6 +25,17 @@ namespace porofrac
    *   POROFRAC_REGISTER(SerialLinearSolverRegistry, "name", "description", factory)
    * and a deck selects one by name.
    */
+  /// What a linear solver did since it was created.
+  struct LinearSolverStatistics
+  {
+    /// Calls of solve().
+    unsigned long solves = 0;
+    /// Krylov iterations summed over the solves (0 for direct solvers).
+    unsigned long iterations = 0;
+    /// Solves an iterative solver handed to a direct one after Max linear iterations.
+    unsigned long direct_fallbacks = 0;
+  };
+
   template <typename MatrixType, typename VectorType>
   class LinearSolver
   {
@@ -55,6 +66,15 @@ namespace porofrac
     /// The name the solver is registered under.
     virtual std::string
     name() const = 0;
+
+    const LinearSolverStatistics &
+    statistics() const
+    {
+      return stats;
+    }
+
+  protected:
+    LinearSolverStatistics stats;
   };
 
   /// Linear solvers for deal.II's serial sparse matrices and vectors.

@@ -11,7 +11,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <porofrac/base/mumps_factorization.h>
+#include <porofrac/base/distributed_linear_solver.h>
+
+#include <memory>
+#include <string>
 
 namespace porofrac
 {
@@ -21,28 +24,41 @@ namespace porofrac
      * The Newton systems of a TwoPhaseSolver shared by the processes of a communicator. Each
      * process assembles the rows of the unknowns it owns (a contiguous range, @p owned) into
      * the whole-size serial Jacobian and residual; sum() completes the residual on every
-     * process, and solve() copies the owned rows into a Trilinos matrix, solves with MUMPS and
-     * gives every process the whole update. Rows assembled by one process only and summed
-     * with zeros are exact, so every process holds the same bits and takes the same Newton
-     * decisions.
+     * process, and solve() copies the owned rows into a Trilinos matrix, solves with the
+     * registered distributed linear solver @p solver_name (DistributedLinearSolverRegistry;
+     * MUMPS, CPR- or AMG-preconditioned GMRES) and gives every process the whole update. Rows
+     * assembled by one process only and summed with zeros are exact, so every process holds the
+     * same bits and takes the same Newton decisions.
      */
     class DistributedNewtonSystem
     {
     public:
+      /// @p max_iterations: Krylov iterations before an iterative solver falls back to MUMPS.
       DistributedNewtonSystem(const MPI_Comm                 communicator,
                               const dealii::SparsityPattern &sparsity,
-                              const dealii::IndexSet        &owned);
+                              const dealii::IndexSet        &owned,
+                              const std::string             &solver_name,
+                              const unsigned int             max_iterations);
 
       /// Sums @p v over the processes, in place (each entry is assembled by one of them).
       void
       sum(dealii::Vector<double> &v) const;
 
-      /// update = J^{-1} residual with the owned rows of @p jacobian; the whole update on
-      /// every process. Throws SolverFailure on every process if MUMPS fails.
+      /// update = J^{-1} residual with the owned rows of @p jacobian, to the relative residual
+      /// @p relative_tolerance for iterative solvers; the whole update on every process.
+      /// Throws SolverFailure on every process if the solver fails.
       void
       solve(const dealii::SparseMatrix<double> &jacobian,
             const dealii::Vector<double>       &residual,
-            dealii::Vector<double>             &update);
+            dealii::Vector<double>             &update,
+            const double                        relative_tolerance);
+
+      /// The distributed linear solver (its name and statistics).
+      const DistributedLinearSolver &
+      linear_solver() const
+      {
+        return *solver;
+      }
 
       /// Whether @p value holds on every process.
       bool
@@ -54,8 +70,8 @@ namespace porofrac
       const dealii::IndexSet                 owned;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       /// Right-hand side and solution of the owned rows, kept between solves.
-      dealii::TrilinosWrappers::MPI::Vector b, x;
-      MumpsFactorization                    lu;
+      dealii::TrilinosWrappers::MPI::Vector    b, x;
+      std::unique_ptr<DistributedLinearSolver> solver;
     };
   } // namespace flow
 } // namespace porofrac

@@ -5,6 +5,10 @@
 #include <porofrac/flow/tpfa_grid.h>
 #include <porofrac/flow/two_phase_solver.h>
 #include <porofrac/geometry/mesh_output.h>
+#include <porofrac/io/json.h>
+
+#include <ostream>
+#include <string>
 
 namespace porofrac
 {
@@ -25,6 +29,19 @@ namespace porofrac
     template <int dim>
     double
     mean_aperture(const geometry::CutMesh<dim> &mesh, const TpfaGrid<dim> &grid);
+
+    /// summary.json's flow_linear_solver: the solver of the Newton systems (@p name), its
+    /// solves, Krylov iterations (0 for direct solvers), iterations per solve and direct
+    /// fallbacks, counted since this process started (a restarted run counts from the restart).
+    io::Json
+    linear_solver_summary(const std::string &name, const LinearSolverStatistics &statistics);
+
+    /// Report lines of an iterative solver of the Newton systems (none for a direct one): the
+    /// direct fallbacks, and whether the Krylov iterations per solve stayed below 30.
+    void
+    report_linear_solver(const std::string            &name,
+                         const LinearSolverStatistics &statistics,
+                         std::ostream                 &report);
   } // namespace flow
 } // namespace porofrac
 

@@ -62,8 +62,15 @@ namespace porofrac
       unsigned int line_search_steps = 4;
       /// Registered name of the linear solver of the Newton steps (SerialLinearSolverRegistry).
       std::string linear_solver = "umfpack";
-      /// Relative tolerance of iterative linear solvers (direct solvers ignore it).
-      double linear_tolerance = 1e-10;
+      /// Registered name of the solver of the distributed Newton systems
+      /// (DistributedLinearSolverRegistry).
+      std::string distributed_linear_solver = "mumps";
+      /// Iterative linear solvers: relative residual min(linear_tolerance, linear_forcing
+      /// |R|/|R_0|), at least 1e-12 (direct solvers ignore it).
+      double linear_tolerance = 1e-4;
+      double linear_forcing   = 1;
+      /// Krylov iterations before an iterative solver hands the system to MUMPS.
+      unsigned int max_linear_iterations = 200;
     };
 
     /// Time stepping: dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max), halved after a failed step.

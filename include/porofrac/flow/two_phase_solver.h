@@ -85,7 +85,8 @@ namespace porofrac
       /**
        * Shares the Newton systems with the other processes of @p communicator
        * (DistributedNewtonSystem): this process assembles the rows of the nodes i with
-       * @p node_owner[i] equal to its rank, and MUMPS solves on all of them. The unknowns are
+       * @p node_owner[i] equal to its rank, and the distributed linear solver
+       * (NewtonParameters::distributed_linear_solver) solves on all of them. The unknowns are
        * renumbered process by process. The state, the pore volumes and everything computed
        * from them (mass defect, energy terms, chops) stay whole on every process, so all
        * processes take the same steps; with one process the results are the serial ones up to
@@ -93,6 +94,20 @@ namespace porofrac
        */
       void
       distribute(const MPI_Comm communicator, const std::vector<unsigned int> &node_owner);
+
+      /// The linear solver of the Newton steps: the distributed one after distribute().
+      const LinearSolverStatistics &
+      linear_statistics() const
+      {
+        return distribution ? distribution->linear_solver().statistics() :
+                              linear_solver->statistics();
+      }
+
+      std::string
+      linear_solver_name() const
+      {
+        return distribution ? distribution->linear_solver().name() : linear_solver->name();
+      }
 
       /// Whether distribute() was called.
       bool
@@ -242,10 +257,12 @@ namespace porofrac
       /// Verbose: the node and phase of the largest residual entry.
       void
       report_largest_residual(const Vector<double> &residual, ConditionalOStream &verbose) const;
-      /// update = J^{-1} residual; false (and why) when the linear solver fails.
+      /// update = J^{-1} residual, iterative solvers to the relative residual @p tolerance;
+      /// false (and why) when the linear solver fails.
       bool
       solve_linear_system(const Vector<double> &residual,
                           Vector<double>       &update,
+                          const double          tolerance,
                           std::string          &failure);
       /// Applies the Newton update (capillary and saturation chops, the dominant phase's
       /// pressure kept); returns the relative update max |dp| / max |p|.
