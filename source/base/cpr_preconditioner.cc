@@ -5,11 +5,11 @@
 #include <porofrac/base/cpr_preconditioner.h>
 #include <porofrac/base/exceptions.h>
 
-#include <Epetra_CrsMatrix.h>
-
 #include <map>
 #include <tuple>
 #include <vector>
+
+#include <Epetra_CrsMatrix.h>
 
 namespace porofrac
 {
@@ -26,7 +26,8 @@ namespace porofrac
       int     n       = 0;
       double *values  = nullptr;
       int    *columns = nullptr;
-      AssertThrow(matrix.ExtractMyRowView(matrix.LRID(static_cast<TrilinosWrappers::types::int_type>(row)),
+      AssertThrow(matrix.ExtractMyRowView(matrix.LRID(
+                                            static_cast<TrilinosWrappers::types::int_type>(row)),
                                           n,
                                           values,
                                           columns) == 0,
@@ -36,12 +37,12 @@ namespace porofrac
 
     /// The global column indices of a locally owned row of @p matrix.
     void
-    row_columns(const TrilinosWrappers::SparseMatrix  &matrix,
-                const types::global_dof_index          row,
+    row_columns(const TrilinosWrappers::SparseMatrix &matrix,
+                const types::global_dof_index         row,
                 std::vector<types::global_dof_index> &columns)
     {
-      const Epetra_CrsMatrix &epetra              = matrix.trilinos_matrix();
-      const auto [n, entries, local_columns]      = row_view(epetra, row);
+      const Epetra_CrsMatrix &epetra         = matrix.trilinos_matrix();
+      const auto [n, entries, local_columns] = row_view(epetra, row);
       (void)entries;
       columns.resize(n);
       for (int e = 0; e < n; ++e)
@@ -76,7 +77,7 @@ namespace porofrac
                             (*owned.begin() + owned.n_elements()) / block_size);
     owned_nodes.compress();
 
-    TrilinosWrappers::SparsityPattern pattern(owned_nodes, owned_nodes, communicator);
+    TrilinosWrappers::SparsityPattern    pattern(owned_nodes, owned_nodes, communicator);
     std::vector<types::global_dof_index> columns;
     for (const auto row : owned)
       {
@@ -108,7 +109,8 @@ namespace porofrac
           {
             const auto [n, entries, local_columns] = row_view(epetra, node * block_size + k);
             for (int e = 0; e < n; ++e)
-              row_values[TrilinosWrappers::global_column_index(epetra, local_columns[e]) / block_size] += entries[e];
+              row_values[TrilinosWrappers::global_column_index(epetra, local_columns[e]) /
+                         block_size] += entries[e];
           }
         columns.clear();
         values.clear();
@@ -149,7 +151,7 @@ namespace porofrac
     const unsigned int n_nodes = owned_nodes.n_elements();
     // Stage 1: restrict (sum the equations of a node), AMG on A_p, prolong (same value to
     // every pressure of the node). begin() is the first locally owned entry.
-    const double *r = src.begin();
+    const double *r  = src.begin();
     double       *rp = pressure_rhs.begin();
     for (unsigned int j = 0; j < n_nodes; ++j)
       {

@@ -135,7 +135,7 @@ namespace porofrac
       solve(const VectorType &b, VectorType &x, const double relative_tolerance) override
       {
         ++stats.solves;
-        x = 0;
+        x                 = 0;
         const double norm = b.l2_norm();
         if (norm == 0)
           return;

@@ -55,13 +55,13 @@ namespace porofrac
     void
     assemble_pressure(const dealii::TrilinosWrappers::SparseMatrix &jacobian);
 
-    const unsigned int                           block_size;
+    const unsigned int                            block_size;
     const dealii::TrilinosWrappers::SparseMatrix *jacobian = nullptr;
-    dealii::IndexSet                             owned, owned_nodes;
-    dealii::TrilinosWrappers::SparseMatrix       pressure;
-    dealii::TrilinosWrappers::PreconditionAMG    amg;
-    dealii::TrilinosWrappers::PreconditionILU    ilu;
-    mutable VectorType                           pressure_rhs, pressure_x, first, residual;
+    dealii::IndexSet                              owned, owned_nodes;
+    dealii::TrilinosWrappers::SparseMatrix        pressure;
+    dealii::TrilinosWrappers::PreconditionAMG     amg;
+    dealii::TrilinosWrappers::PreconditionILU     ilu;
+    mutable VectorType                            pressure_rhs, pressure_x, first, residual;
   };
 } // namespace porofrac
 
