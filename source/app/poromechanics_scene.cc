@@ -5,7 +5,6 @@
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/app/poromechanics_scene.h>
 #include <porofrac/app/time_loop.h>
-#include <porofrac/base/mpi_tools.h>
 #include <porofrac/coupling/energy_estimate.h>
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/io/pvd_writer.h>
@@ -466,10 +465,7 @@ namespace porofrac
         scene.flow          = &flow;
         scene.poromechanics = &pm;
         scene.time          = stepper.time();
-        collectively(context.communicator, [&]() {
-          if (context.writes_files())
-            run_postprocessors(scene, context);
-        });
+        run_postprocessors_on_writer(scene, context);
       }
     } // namespace
 

@@ -5,7 +5,6 @@
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/app/time_loop.h>
 #include <porofrac/app/two_phase_flow_scene.h>
-#include <porofrac/base/mpi_tools.h>
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/flow/model.h>
 #include <porofrac/io/pvd_writer.h>
@@ -323,10 +322,7 @@ namespace porofrac
         SceneView<dim> scene{mesh, parameters};
         scene.flow = &model;
         scene.time = stepper.time();
-        collectively(context.communicator, [&]() {
-          if (writer)
-            run_postprocessors(scene, context);
-        });
+        run_postprocessors_on_writer(scene, context);
       }
     } // namespace
 

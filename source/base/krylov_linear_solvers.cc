@@ -147,9 +147,16 @@ namespace porofrac
           }
         catch (const SolverControl::NoConvergence &)
           {
+            // Counted before MUMPS runs: a singular system fails there too.
+            stats.iterations += control.last_step();
+            ++stats.direct_fallbacks;
             fallback.factorize(*matrix);
             fallback.solve(x, b);
-            ++stats.direct_fallbacks;
+            return;
+          }
+        catch (const std::exception &e)
+          {
+            throw SolverFailure(what + ": GMRES failed (" + e.what() + ")");
           }
         stats.iterations += control.last_step();
       }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/postprocess/postprocessor.h>
+#include <porofrac/base/mpi_tools.h>
 
 #include <algorithm>
 
@@ -29,6 +30,16 @@ namespace porofrac
     }
 
     template <int dim>
+    void
+    run_postprocessors_on_writer(SceneView<dim> &scene, io::RunContext &context)
+    {
+      collectively(context.communicator, [&]() {
+        if (context.writes_files())
+          run_postprocessors(scene, context);
+      });
+    }
+
+    template <int dim>
     bool
     any_postprocessor(const PhysicsParameters &parameters)
     {
@@ -46,5 +57,9 @@ namespace porofrac
     run_postprocessors(SceneView<2> &, io::RunContext &);
     template void
     run_postprocessors(SceneView<3> &, io::RunContext &);
+    template void
+    run_postprocessors_on_writer(SceneView<2> &, io::RunContext &);
+    template void
+    run_postprocessors_on_writer(SceneView<3> &, io::RunContext &);
   } // namespace app
 } // namespace porofrac

@@ -76,6 +76,13 @@ namespace porofrac
     void
     run_postprocessors(SceneView<dim> &scene, io::RunContext &context);
 
+    /// run_postprocessors() on the process that writes files (rank 0) while the others wait; a
+    /// failure there is thrown on every process (collectively()). For scenes whose state is
+    /// whole on every process.
+    template <int dim>
+    void
+    run_postprocessors_on_writer(SceneView<dim> &scene, io::RunContext &context);
+
     /// Whether the deck switches any postprocessor on.
     template <int dim>
     bool
