@@ -410,6 +410,7 @@ namespace porofrac
         pm.save(w);
         energy->save(w);
         totals.save(w);
+        flow::save_linear_statistics(w, pm.flow.solver->linear_statistics());
         w.put("last written step", static_cast<unsigned int>(last_written + 1));
       }
 
@@ -422,6 +423,7 @@ namespace porofrac
         pm.load(r);
         energy->load(r);
         totals.load(r);
+        pm.flow.solver->restore_linear_statistics(flow::load_linear_statistics(r));
         unsigned int written = 0;
         r.get("last written step", written);
         last_written = int(written) - 1;

@@ -270,6 +270,7 @@ namespace porofrac
         w.put("flow unknowns", solver.n_unknowns());
         w.put("flow state", solver.state);
         totals.save(w);
+        flow::save_linear_statistics(w, solver.linear_statistics());
         w.put("last written step", static_cast<unsigned int>(last_written + 1));
       }
 
@@ -282,6 +283,7 @@ namespace porofrac
         r.expect("flow unknowns", solver.n_unknowns());
         r.get("flow state", solver.state);
         totals.load(r);
+        solver.restore_linear_statistics(flow::load_linear_statistics(r));
         unsigned int written = 0;
         r.get("last written step", written);
         last_written = int(written) - 1;

@@ -70,6 +70,28 @@ namespace porofrac
     }
 
     void
+    save_linear_statistics(io::CheckpointWriter &w, const LinearSolverStatistics &statistics)
+    {
+      w.put("flow linear solves", static_cast<unsigned int>(statistics.solves));
+      w.put("flow linear iterations", static_cast<unsigned int>(statistics.iterations));
+      w.put("flow linear direct fallbacks", static_cast<unsigned int>(statistics.direct_fallbacks));
+    }
+
+    LinearSolverStatistics
+    load_linear_statistics(io::CheckpointReader &r)
+    {
+      unsigned int solves = 0, iterations = 0, fallbacks = 0;
+      r.get("flow linear solves", solves);
+      r.get("flow linear iterations", iterations);
+      r.get("flow linear direct fallbacks", fallbacks);
+      LinearSolverStatistics statistics;
+      statistics.solves           = solves;
+      statistics.iterations       = iterations;
+      statistics.direct_fallbacks = fallbacks;
+      return statistics;
+    }
+
+    void
     report_linear_solver(const std::string            &name,
                          const LinearSolverStatistics &statistics,
                          std::ostream                 &report)

@@ -34,6 +34,15 @@ namespace porofrac
     unsigned long iterations = 0;
     /// Solves an iterative solver handed to a direct one after Max linear iterations.
     unsigned long direct_fallbacks = 0;
+
+    LinearSolverStatistics &
+    operator+=(const LinearSolverStatistics &other)
+    {
+      solves += other.solves;
+      iterations += other.iterations;
+      direct_fallbacks += other.direct_fallbacks;
+      return *this;
+    }
   };
 
   template <typename MatrixType, typename VectorType>

@@ -5,6 +5,7 @@
 #include <porofrac/flow/tpfa_grid.h>
 #include <porofrac/flow/two_phase_solver.h>
 #include <porofrac/geometry/mesh_output.h>
+#include <porofrac/io/checkpoint.h>
 #include <porofrac/io/json.h>
 
 #include <ostream>
@@ -32,9 +33,15 @@ namespace porofrac
 
     /// summary.json's flow_linear_solver: the solver of the Newton systems (@p name), its
     /// solves, Krylov iterations (0 for direct solvers), iterations per solve and direct
-    /// fallbacks, counted since this process started (a restarted run counts from the restart).
+    /// fallbacks, over the whole run (a restarted run continues the counts of its checkpoint).
     io::Json
     linear_solver_summary(const std::string &name, const LinearSolverStatistics &statistics);
+
+    /// The linear-solver statistics in a checkpoint (restarted runs continue the counts).
+    void
+    save_linear_statistics(io::CheckpointWriter &w, const LinearSolverStatistics &statistics);
+    LinearSolverStatistics
+    load_linear_statistics(io::CheckpointReader &r);
 
     /// Report lines of an iterative solver of the Newton systems (none for a direct one): the
     /// direct fallbacks, and whether the Krylov iterations per solve stayed below 30.

@@ -95,12 +95,22 @@ namespace porofrac
       void
       distribute(const MPI_Comm communicator, const std::vector<unsigned int> &node_owner);
 
-      /// The linear solver of the Newton steps: the distributed one after distribute().
-      const LinearSolverStatistics &
+      /// What the linear solver of the Newton steps (the distributed one after distribute())
+      /// did, plus the statistics of the run before a restart (restore_linear_statistics()).
+      LinearSolverStatistics
       linear_statistics() const
       {
-        return distribution ? distribution->linear_solver().statistics() :
-                              linear_solver->statistics();
+        LinearSolverStatistics s = linear_before_restart;
+        s +=
+          distribution ? distribution->linear_solver().statistics() : linear_solver->statistics();
+        return s;
+      }
+
+      /// Continues the counts of linear_statistics() from a checkpoint's.
+      void
+      restore_linear_statistics(const LinearSolverStatistics &before_restart)
+      {
+        linear_before_restart = before_restart;
       }
 
       std::string
@@ -232,6 +242,7 @@ namespace porofrac
       {
         return !distribution || owned_node[i];
       }
+      LinearSolverStatistics linear_before_restart;
       /// Solver of the Newton systems (it may keep set-up of the fixed sparsity pattern).
       std::shared_ptr<SerialLinearSolver> linear_solver;
       /// The shared Newton systems (distribute()), and which nodes this process assembles.
