@@ -41,13 +41,6 @@ namespace porofrac
     void
     vmult(VectorType &dst, const VectorType &src) const;
 
-    /// Rows of the pressure matrix A_p (the number of nodes).
-    dealii::types::global_dof_index
-    n_pressure_rows() const
-    {
-      return pressure.m();
-    }
-
   private:
     void
     make_pressure_pattern(const dealii::TrilinosWrappers::SparseMatrix &jacobian);
