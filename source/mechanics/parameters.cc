@@ -269,17 +269,25 @@ namespace porofrac
                         "tests).");
       prm.declare_entry("Analytical solution",
                         "none",
-                        Patterns::Selection("none|single fracture"),
-                        "Errors against the analytical solution of Section 5.2.1.");
+                        Patterns::Selection("none|single fracture|penny crack"),
+                        "Errors against an analytical solution: single fracture (Section "
+                        "5.2.1, 2D) or penny crack (3D: one planar disc of radius Fracture half "
+                        "length in an infinite medium under the remote compression Remote stress "
+                        "along x and the Fracture pressure at the disc centre; closed and "
+                        "slipping, sticking or frictionless, or open; doc/algorithms.md).");
       prm.declare_entry("Remote stress",
                         "1e8",
                         Patterns::Double(),
-                        "5.2.1: remote compression sigma (Pa).");
+                        "Analytical solutions: remote compression sigma along x (Pa).");
       prm.declare_entry("Fracture angle",
                         "20",
                         Patterns::Double(),
-                        "5.2.1: angle psi of the fracture to the x axis (degrees).");
-      prm.declare_entry("Fracture half length", "1", Patterns::Double(), "5.2.1: l (m).");
+                        "5.2.1: angle psi of the fracture to the x axis (degrees); penny crack: "
+                        "taken from the mesh.");
+      prm.declare_entry("Fracture half length",
+                        "1",
+                        Patterns::Double(),
+                        "Analytical solutions: 5.2.1: half length l; penny crack: radius a (m).");
       prm.leave_subsection();
     }
 
@@ -423,6 +431,12 @@ namespace porofrac
       check_input(!axisymmetric || dim == 2,
                   "Mechanics/Axisymmetric",
                   "the axisymmetric mode needs Dimension = 2");
+      check_input(reports.analytical_solution != "penny crack" || dim == 3,
+                  "Mechanics/Analytical solution",
+                  "the penny crack needs Dimension = 3");
+      check_input(reports.fracture_half_length > 0,
+                  "Mechanics/Fracture half length",
+                  "must be positive");
       check_input(axisymmetric || pre_stress_hoop == 0,
                   "Mechanics/Pre-stress hoop",
                   "a hoop pre-stress needs Axisymmetric = true");

@@ -34,11 +34,11 @@ namespace porofrac
       bool iteration_table = false;
       /// Print the range of each stress component at the cell centroids.
       bool stress_range = false;
-      /// "none" or "single fracture" (paper Section 5.2.1) and that solution's data.
+      /// "none", "single fracture" (paper Section 5.2.1) or "penny crack" (3D) and the data.
       std::string analytical_solution  = "none";
       double      remote_stress        = 1e8; ///< sigma (Pa)
       double      fracture_angle       = 20;  ///< psi (degrees)
-      double      fracture_half_length = 1;   ///< l (m)
+      double      fracture_half_length = 1;   ///< l (m); penny crack: radius a
     };
 
     /**
