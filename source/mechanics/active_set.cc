@@ -13,7 +13,7 @@ namespace porofrac
        * The active-set method of paper Section 5.1: stick faces get [u]_tau = 0, slip faces
        * lambda_tau = F lambda_n w(a) with the slip direction w = a / |a|, a = lambda_tau + c
        * [u]_tau. In 2D w is a sign and the slip row is linear. In 3D the row is Newton-linearized
-       * in a as well (doc/algorithms.md §3): with gamma = F lambda_n^k / |a^k| and the projection
+       * in a as well (doc/algorithms.md §2): with gamma = F lambda_n^k / |a^k| and the projection
        * P = I - w w^T onto the tangent orthogonal to w,
        *   (I - gamma P) lambda_tau^{k+1} - F w lambda_n^{k+1} - c gamma P [u]_tau^{k+1} = 0;
        * freezing w instead (gamma = 0) converges only linearly. Where gamma >= 1 the linearized

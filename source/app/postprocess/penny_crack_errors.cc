@@ -22,18 +22,18 @@ namespace porofrac
     {
       const std::string parameter = "Mechanics/Analytical solution";
 
-      /// The exact fields of a penny crack on its plane (global frame; doc/algorithms.md §9).
+      /// The exact fields of a penny crack on its plane (global frame; doc/algorithms.md §17).
       struct PennySolution
       {
         Point<3>     centre;
         Tensor<1, 3> normal;        ///< n+
-        double       radius    = 1; ///< a
-        double       lambda_n  = 0; ///< sigma sin^2 psi - p if closed, else 0
+        double       radius   = 1;  ///< a
+        double       lambda_n = 0;  ///< sigma sin^2 psi - p if closed, else 0
         Tensor<1, 3> lambda_t;      ///< uniform lambda_tau
         Tensor<1, 3> direction;     ///< unit slip direction (that of the resolved shear)
         double       slip_peak = 0; ///< slip magnitude at the centre
         double       open_peak = 0; ///< opening -[u]_n at the centre
-        std::string  regime;    ///< "open", "slip" or "stick"
+        std::string  regime;        ///< "open", "slip" or "stick"
 
         double
         r(const Point<3> &x) const
@@ -60,8 +60,8 @@ namespace porofrac
        *   sqrt(1 - r^2/a^2) (Sneddon 1946), slip with dtau = tau;
        * - the slip is parallel to the resolved shear with magnitude 8 (1 - nu) / (pi (2 - nu))
        *   dtau / mu sqrt(a^2 - r^2) (Eshelby 1957, Segall 2010 eq. (4.74)).
-       * Relative L2 errors over r <= 0.9 a of the P2 reconstructions (3 x 3 Gauss points per
-       * face) and of the face means.
+       * Relative L2 errors over r <= 0.9 a of the P2 reconstructions (QGaussSimplex(3), 6 points
+       * per face) and of the face means.
        */
       class PennyCrackErrors : public Postprocessor<3>
       {
@@ -80,14 +80,14 @@ namespace porofrac
                          << exact.slip_peak << " m, peak opening " << exact.open_peak
                          << " m, lambda_n " << exact.lambda_n << " Pa, |lambda_t| "
                          << exact.lambda_t.norm() << " Pa" << std::endl;
-          io::Json e = io::Json::object();
-          e["regime"]                = exact.regime;
-          e["slip_peak_exact"]       = exact.slip_peak;
-          e["opening_peak_exact"]    = exact.open_peak;
-          e["lambda_n_exact"]        = exact.lambda_n;
-          e["lambda_t_exact"]        = exact.lambda_t.norm();
-          const Errors p2            = reconstruction_errors(problem, exact);
-          const Errors means         = face_mean_errors(problem, exact);
+          io::Json e              = io::Json::object();
+          e["regime"]             = exact.regime;
+          e["slip_peak_exact"]    = exact.slip_peak;
+          e["opening_peak_exact"] = exact.open_peak;
+          e["lambda_n_exact"]     = exact.lambda_n;
+          e["lambda_t_exact"]     = exact.lambda_t.norm();
+          const Errors p2         = reconstruction_errors(problem, exact);
+          const Errors means      = face_mean_errors(problem, exact);
           write(p2, "", e);
           write(means, "_face_mean", e);
           report(p2, "P2 reconstructions", context.report);
@@ -149,10 +149,10 @@ namespace porofrac
                       "the penny crack needs exactly one fracture; the mesh has " +
                         std::to_string(mesh.fracture_ids.size()));
           PennySolution exact;
-          exact.radius  = prm.reports.fracture_half_length;
-          exact.normal  = mesh.fracture_faces.front().normal;
-          double area   = 0;
-          double F_min  = std::numeric_limits<double>::max(), F_max = 0;
+          exact.radius       = prm.reports.fracture_half_length;
+          exact.normal       = mesh.fracture_faces.front().normal;
+          double       area  = 0;
+          double       F_min = std::numeric_limits<double>::max(), F_max = 0;
           Tensor<1, 3> c;
           for (const auto &face : mesh.fracture_faces)
             {
@@ -289,6 +289,9 @@ namespace porofrac
         "errors against the analytical solutions of a penny crack (Eshelby, Sneddon)";
     } // namespace
 
-    POROFRAC_REGISTER(PostprocessorRegistry<3>, "analytical solution penny crack", description, make)
+    POROFRAC_REGISTER(PostprocessorRegistry<3>,
+                      "analytical solution penny crack",
+                      description,
+                      make)
   } // namespace app
 } // namespace porofrac
