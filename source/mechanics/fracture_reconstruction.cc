@@ -45,9 +45,15 @@ namespace porofrac
             if (fe.has_support_on_face(i, face.face_no[geometry::plus]))
               {
                 const unsigned int comp = fe.system_to_component_index(i).first;
-                double             m    = 0;
-                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
-                  m += fe_face.shape_value_component(i, q, comp) * fe_face.JxW(q);
+                // 2D: int phi_i. 3D: the P2 vertex functions integrate to zero on a triangle,
+                // so every node of the face gets |sigma| / 3 (the integral of the P1 hat
+                // function at a vertex, and of the P2 function at an edge midpoint).
+                double m = 0;
+                if (dim == 3)
+                  m = face.measure / 3;
+                else
+                  for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                    m += fe_face.shape_value_component(i, q, comp) * fe_face.JxW(q);
                 nodal[local[i]].first += l[comp] * m;
                 nodal[local[i]].second += m;
               }

@@ -34,6 +34,8 @@ namespace porofrac
      *   fracture, with the nodal traction lambda_i = (sum_sigma int_sigma lambda_sigma phi_i) /
      *   (sum_sigma int_sigma phi_i), i.e. the weak-form coupling force B^T lambda of node i (which
      *   equals f - K u there at the solution) divided by the lumped fracture mass of the node.
+     *   In 3D the P2 vertex functions integrate to zero on a triangle, and the weight of every
+     *   node of a face is |sigma| / 3 instead (an area-weighted mean of the face multipliers).
      * Values at @p n_points Gauss points per fracture face.
      */
     template <int dim>
