@@ -473,7 +473,14 @@ namespace porofrac
             linearize(u, lambda, c_now, rows, rhs, states);
             stats.time_contact_rows += clock.wall_time();
           }
-          solve_linear_system(rows, states, rhs, delta);
+          try
+            {
+              solve_linear_system(rows, states, rhs, delta);
+            }
+          catch (const SolverFailure &e)
+            {
+              throw SolverFailure(linear_failure_message(e.what()));
+            }
           const double alpha_max = cycle_damping_factor(states, stats.iterations);
           seen_states.push_back(states);
 
@@ -511,6 +518,19 @@ namespace porofrac
         << " iterations; last relative residual " << std::scientific << std::setprecision(3)
         << stats.residual_history.back();
       throw SolverFailure(s.str());
+    }
+
+
+
+    template <int dim, typename System>
+    std::string
+    ContactSolver<dim, System>::linear_failure_message(const std::string &reason) const
+    {
+      std::ostringstream s;
+      s << "contact solver (" << prm.method << ") stopped in iteration " << stats.iterations << ": "
+        << reason << "; last relative residual " << std::scientific << std::setprecision(3)
+        << (stats.residual_history.empty() ? 1. : stats.residual_history.back());
+      return s.str();
     }
 
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/timer.h>
 
+#include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/multiplier_schur_complement.h>
 
 #include <algorithm>
@@ -181,7 +182,20 @@ namespace porofrac
               }
           }
       if (m_r > 0)
-        S.compute_lu_factorization();
+        {
+          // LAPACK reports a zero pivot by an exception; the face rows of this iterate make
+          // the contact Jacobian singular, a failed step rather than an internal error.
+          try
+            {
+              S.compute_lu_factorization();
+            }
+          catch (const dealii::ExceptionBase &)
+            {
+              clear_rows();
+              throw SolverFailure("the multiplier Schur complement (" + std::to_string(m_r) +
+                                  " unknowns) of the contact Jacobian is singular");
+            }
+        }
       factorized = true;
       ++n_dense_factorizations;
       time_dense_lu += clock.wall_time();

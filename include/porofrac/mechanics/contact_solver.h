@@ -15,6 +15,7 @@
 #include <porofrac/mechanics/parameters.h>
 
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -210,6 +211,10 @@ namespace porofrac
       /// One progress line per iteration.
       void
       report_iteration(const double residual, const double alpha, const double c_now);
+
+      /// The message of a linear solve that failed in the current contact iteration.
+      std::string
+      linear_failure_message(const std::string &reason) const;
 
       const System             &system;
       const FrictionField<dim> &friction_field;
