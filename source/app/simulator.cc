@@ -146,7 +146,16 @@ namespace porofrac
         if (physics == "two-phase flow" || physics == "poromechanics")
           physics_parameters.flow.parse_parameters(prm);
         if (physics == "poromechanics")
-          physics_parameters.coupling.parse_parameters(prm);
+          {
+            physics_parameters.coupling.parse_parameters(prm);
+            check_input(physics_parameters.flow.permeability_expression.empty(),
+                        "Flow/Matrix/Permeability expression",
+                        "is for two-phase flow scenes; poromechanics starts its Kozeny-Carman "
+                        "law from the uniform Flow/Matrix/Permeability");
+            check_input(physics_parameters.flow.sample_lines.empty(),
+                        "Flow/Sample lines",
+                        "are written by two-phase flow scenes only");
+          }
         const std::string axisymmetric =
           (physics_parameters.mechanics.axisymmetric && physics != "two-phase flow") ?
             "Mechanics/Axisymmetric" :

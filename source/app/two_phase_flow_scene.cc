@@ -5,7 +5,9 @@
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/app/time_loop.h>
 #include <porofrac/app/two_phase_flow_scene.h>
+#include <porofrac/flow/boundary_fluxes.h>
 #include <porofrac/flow/flow_output.h>
+#include <porofrac/flow/line_samples.h>
 #include <porofrac/flow/model.h>
 #include <porofrac/io/pvd_writer.h>
 
@@ -119,16 +121,22 @@ namespace porofrac
         const geometry::CutMesh<dim> &mesh;
         io::RunContext               &context;
         /// Whether this process writes the files (rank 0 of the run's processes).
-        const bool                 writer;
-        flow::FlowModel<dim>       model;
-        flow::TpfaGrid<dim>       &grid;
-        flow::TwoPhaseSolver<dim> &solver;
-        FlowTotals                 totals;
-        flow::StepResult           result;
-        io::PvdWriter              pvd;
-        int                        last_written = -1; // step of the last field files
-        Checkpointing              checkpoints;
-        std::ofstream             *history = nullptr;
+        const bool                         writer;
+        flow::FlowModel<dim>               model;
+        flow::TpfaGrid<dim>               &grid;
+        flow::TwoPhaseSolver<dim>         &solver;
+        FlowTotals                         totals;
+        flow::StepResult                   result;
+        io::PvdWriter                      pvd;
+        int                                last_written = -1; // step of the last field files
+        Checkpointing                      checkpoints;
+        std::ofstream                     *history = nullptr;
+        std::vector<flow::SampleLine<dim>> sample_lines;
+        const bool                         axisymmetric;
+
+        /// line_<name>.csv of every sample line: s, x, y[, z], p_w of the final state.
+        void
+        write_sample_lines() const;
       };
 
 
@@ -151,6 +159,9 @@ namespace porofrac
           , solver(*model.solver)
           , pvd(context.path("flow.pvd"))
           , checkpoints(context, "two-phase flow", stepper, pvd, {"history.csv"})
+          , sample_lines(
+              flow::parse_sample_lines<dim>(parameters.flow.sample_lines, "Flow/Sample lines"))
+          , axisymmetric(parameters.flow.axisymmetric)
       {
         solver.timer = &context.timer;
         if (context.communicator != MPI_COMM_SELF)
@@ -165,8 +176,18 @@ namespace porofrac
                                       " connections of cocircular cells or centres out of order "
                                       "(merged or unsigned distances)")
                        << std::endl;
-        context.summary["n_unknowns_flow"] = solver.n_unknowns();
-        totals.initial_volumes             = solver.phase_volumes(solver.state);
+        if (dim == 3 && grid.n_fracture_cells > 0)
+          context.report << "Flow: " << grid.n_non_admissible_fracture
+                         << " fracture connections with the triangle circumcentre on or beyond "
+                            "the edge (unsigned distances)"
+                         << std::endl;
+        context.summary["n_unknowns_flow"]                     = solver.n_unknowns();
+        io::Json &admissibility                                = context.summary["flow_mesh"];
+        admissibility["n_non_admissible_matrix_faces"]         = grid.n_non_admissible;
+        admissibility["n_matrix_fallback_connections"]         = grid.n_fallback;
+        admissibility["n_non_admissible_fracture_connections"] = grid.n_non_admissible_fracture;
+        admissibility["n_intersection_nodes"]                  = grid.n_intersections;
+        totals.initial_volumes                                 = solver.phase_volumes(solver.state);
       }
 
 
@@ -265,6 +286,38 @@ namespace porofrac
 
       template <int dim>
       void
+      FlowRun<dim>::write_sample_lines() const
+      {
+        for (const auto &line : sample_lines)
+          {
+            const auto    cells = flow::cells_along_line(mesh, line);
+            std::ofstream out(context.path("line_" + line.name + ".csv"));
+            out << (dim == 2 ? "s,x,y,p_w" : "s,x,y,z,p_w") << '\n' << std::setprecision(10);
+            unsigned int outside = 0;
+            for (unsigned int k = 0; k < cells.size(); ++k)
+              {
+                const double     t = double(k) / (cells.size() - 1);
+                const Point<dim> p = line.start + t * (line.end - line.start);
+                if (cells[k] == numbers::invalid_unsigned_int)
+                  {
+                    ++outside;
+                    continue;
+                  }
+                out << t * line.start.distance(line.end);
+                for (unsigned int d = 0; d < dim; ++d)
+                  out << ',' << p[d];
+                out << ',' << solver.pressure(solver.state, cells[k], 0) << '\n';
+              }
+            if (outside > 0)
+              context.report << "Flow: sample line " << line.name << ": " << outside
+                             << " points outside the mesh (not written)" << std::endl;
+          }
+      }
+
+
+
+      template <int dim>
+      void
       FlowRun<dim>::save(io::CheckpointWriter &w) const
       {
         w.put("flow unknowns", solver.n_unknowns());
@@ -320,6 +373,11 @@ namespace porofrac
         flow::report_linear_solver(solver.linear_solver_name(),
                                    solver.linear_statistics(),
                                    context.report);
+
+        summary["boundary_fluxes"] =
+          flow::boundary_fluxes(mesh, solver, model.matrix_flux, axisymmetric);
+        if (writer)
+          write_sample_lines();
 
         SceneView<dim> scene{mesh, parameters};
         scene.flow = &model;

@@ -2,6 +2,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/flow/model.h>
 #include <porofrac/io/expression.h>
+#include <porofrac/io/text.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,14 +37,103 @@ namespace porofrac
         return ids;
       }
 
-      /// Matrix sources h^alpha(x) (1/s, volume of phase per bulk volume): |K| h^alpha per cell.
+      template <int dim>
+      typename TpfaGrid<dim>::Centres
+      cell_centres(const std::string &choice)
+      {
+        using Centres = typename TpfaGrid<dim>::Centres;
+        if (choice == "auto")
+          return dim == 2 ? Centres::circumcentre : Centres::centroid;
+        return choice == "centroid" ? Centres::centroid : Centres::circumcentre;
+      }
+
+      /// Measure of a matrix boundary face (segment or triangle), times 2 pi r if axisymmetric.
+      template <int dim, typename Face>
+      double
+      boundary_face_area(const Face &face, const bool axisymmetric)
+      {
+        const Tensor<1, dim> a = face->vertex(1) - face->vertex(0);
+        double               measure;
+        Point<dim>           centre;
+        for (unsigned int v = 0; v < dim; ++v)
+          centre += face->vertex(v) / double(dim);
+        if constexpr (dim == 2)
+          measure = a.norm();
+        else
+          measure = 0.5 * cross_product_3d(a, face->vertex(2) - face->vertex(0)).norm();
+        return measure * (axisymmetric ? 2. * numbers::PI * centre[1] : 1.);
+      }
+
+      template <int dim, typename Cell>
+      Point<dim>
+      centroid(const Cell &cell)
+      {
+        Point<dim> c;
+        for (const unsigned int v : cell->vertex_indices())
+          c += cell->vertex(v) / double(cell->n_vertices());
+        return c;
+      }
+
+      /// Matrix permeability: K_0, or the expression at every cell centroid.
       template <int dim>
       void
-      set_sources(const std::array<std::string, 2> &expression,
-                  const TpfaGrid<dim>              &grid,
-                  TwoPhaseSolver<dim>              &solver)
+      set_permeability(const FlowParameters         &parameters,
+                       const geometry::CutMesh<dim> &mesh,
+                       TpfaGrid<dim>                &grid)
       {
-        if (expression[0] == "0" && expression[1] == "0")
+        grid.permeability.assign(grid.n_matrix_cells, parameters.permeability);
+        if (parameters.permeability_expression.empty())
+          return;
+        const std::string name = "Flow/Matrix/Permeability expression";
+        const auto k = io::parse_expressions<dim>({parameters.permeability_expression}, name);
+        for (const auto &cell : mesh.triangulation.active_cell_iterators())
+          {
+            const Point<dim> x     = centroid<dim>(cell);
+            const double     value = k->value(x);
+            check_input(value > 0 && std::isfinite(value),
+                        name,
+                        "is " + io::to_text(value) + " at " + io::to_text(x) +
+                          ", but a permeability must be positive");
+            grid.permeability[cell->active_cell_index()] = value;
+          }
+      }
+
+      /**
+       * The inflow per face area of each Matrix flux id: the given one, or the total rate divided
+       * by the area of the id's faces.
+       */
+      template <int dim>
+      FaceFlux
+      face_fluxes(const FlowParameters &parameters, const geometry::CutMesh<dim> &mesh)
+      {
+        std::map<types::boundary_id, double> area;
+        for (const auto &cell : mesh.triangulation.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              area[cell->face(f)->boundary_id()] +=
+                boundary_face_area<dim>(cell->face(f), parameters.axisymmetric);
+        FaceFlux result;
+        for (const auto &[id, flux] : parameters.matrix_flux)
+          for (unsigned int phase = 0; phase < 2; ++phase)
+            result[id][phase] = flux.total ? flux.rate[phase] / area[id] : flux.rate[phase];
+        return result;
+      }
+
+      /**
+       * Volumetric sources per node (m^3/s): matrix sources h^alpha(x) (1/s, volume of phase per
+       * bulk volume) as |K| h^alpha per cell, plus the inflow |e| q^alpha through every matrix
+       * boundary face e with a Matrix flux condition (@p face_flux), on the cell of the face.
+       */
+      template <int dim>
+      void
+      set_sources(const FlowParameters         &parameters,
+                  const FaceFlux               &face_flux,
+                  const geometry::CutMesh<dim> &mesh,
+                  const TpfaGrid<dim>          &grid,
+                  TwoPhaseSolver<dim>          &solver)
+      {
+        const auto &expression = parameters.source;
+        if (expression[0] == "0" && expression[1] == "0" && face_flux.empty())
           return;
         solver.source.assign(grid.n_nodes(), {{0., 0.}});
         for (unsigned int phase = 0; phase < 2; ++phase)
@@ -56,6 +146,15 @@ namespace porofrac
                 solver.source[K][phase] = grid.nodes[K].measure * value;
               }
           }
+        for (const auto &cell : mesh.triangulation.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f) && face_flux.count(cell->face(f)->boundary_id()))
+              {
+                const auto  &q    = face_flux.at(cell->face(f)->boundary_id());
+                const double area = boundary_face_area<dim>(cell->face(f), parameters.axisymmetric);
+                for (unsigned int phase = 0; phase < 2; ++phase)
+                  solver.source[cell->active_cell_index()][phase] += area * q[phase];
+              }
       }
     } // namespace
 
@@ -70,6 +169,12 @@ namespace porofrac
       model.rocks = parameters.rocks;
       const auto matrix_ids =
         dirichlet_ids(parameters.matrix_dirichlet, mesh, true, "Flow/Boundary conditions/Matrix");
+      {
+        DirichletData flux_ids;
+        for (const auto &q : parameters.matrix_flux)
+          flux_ids[q.first] = q.second.rate;
+        dirichlet_ids(flux_ids, mesh, true, "Flow/Boundary conditions/Matrix flux");
+      }
       const auto fracture_ids = dirichlet_ids(parameters.fracture_dirichlet,
                                               mesh,
                                               false,
@@ -79,14 +184,17 @@ namespace porofrac
       if (adjust_newton)
         adjust_newton(model.newton);
 
-      model.grid =
-        std::make_unique<TpfaGrid<dim>>(mesh, parameters.axisymmetric, matrix_ids, fracture_ids);
+      model.grid                 = std::make_unique<TpfaGrid<dim>>(mesh,
+                                                   parameters.axisymmetric,
+                                                   matrix_ids,
+                                                   fracture_ids,
+                                                   cell_centres<dim>(parameters.cell_centres));
       TpfaGrid<dim> &grid        = *model.grid;
       model.initial_porosity     = parameters.porosity;
       model.initial_permeability = parameters.permeability;
       model.initial_aperture     = parameters.aperture;
       grid.porosity.assign(grid.n_matrix_cells, model.initial_porosity);
-      grid.permeability.assign(grid.n_matrix_cells, model.initial_permeability);
+      set_permeability(parameters, mesh, grid);
       grid.aperture.assign(grid.n_fracture_cells, model.initial_aperture);
       grid.normal_transmissibility = parameters.normal_transmissibility;
       grid.damaged_layer_thickness = parameters.damaged_layer_thickness;
@@ -107,7 +215,8 @@ namespace porofrac
         }
       solver.apply_dirichlet(solver.state);
       solver.begin_time_step();
-      set_sources(parameters.source, grid, solver);
+      model.matrix_flux = face_fluxes(parameters, mesh);
+      set_sources(parameters, model.matrix_flux, mesh, grid, solver);
       return model;
     }
 

@@ -11,6 +11,9 @@
 #include <porofrac/io/text.h>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
 #include <vector>
 
 namespace porofrac
@@ -78,6 +81,14 @@ namespace porofrac
                           "5e-20",
                           Patterns::Double(),
                           "K_0 of the Kozeny-Carman law, K at phi_0 (m^2).");
+        prm.declare_entry("Permeability expression",
+                          "",
+                          Patterns::Anything(),
+                          "Heterogeneous matrix permeability (m^2): a muparser expression of x, "
+                          "y (, z) evaluated at the centroid of every matrix cell, e.g. "
+                          "'1e-12 + 9e-12*(z < 10)'; empty: Permeability everywhere. Two-phase "
+                          "flow scenes only (the Kozeny-Carman law of poromechanics starts from "
+                          "the uniform K_0).");
         prm.declare_entry("Source w",
                           "0",
                           Patterns::Anything(),
@@ -128,6 +139,15 @@ namespace porofrac
                           Patterns::Anything(),
                           "Dirichlet conditions on fracture nodes on the outer boundary, same "
                           "syntax (matrix boundary ids).");
+        prm.declare_entry("Matrix flux",
+                          "",
+                          Patterns::Anything(),
+                          "Prescribed fluxes into the matrix through boundary faces: 'id: q_w = "
+                          "v, q_nw = v; ...', volume of phase per face area and second (m/s), "
+                          "or 'id: Q_w = v, Q_nw = v', the total rate through the id (m^3/s) "
+                          "spread over its faces in proportion to their area (exact totals where "
+                          "the faces only approximate a region); positive into the domain, a "
+                          "missing phase 0. An id may not also carry a Dirichlet condition.");
         prm.leave_subsection();
       }
 
@@ -298,6 +318,23 @@ namespace porofrac
       declare_rock(prm, fracture_rock);
       declare_fracture_data(prm);
       declare_boundary_conditions(prm);
+      prm.declare_entry("Cell centres",
+                        "auto",
+                        Patterns::Selection("auto|circumcentre|centroid"),
+                        "Where the pressure of a matrix cell (and, in 3D, of a fracture "
+                        "triangle) lives. circumcentre: the paper's TPFA, exact two-point fluxes "
+                        "on Delaunay meshes. centroid: half transmissibilities |e| K (n . d) / "
+                        "|d|^2, d from the centroid to the face centre (always positive; "
+                        "consistent only on near-orthogonal meshes). auto: circumcentres in 2D "
+                        "(Delaunay flips make the mesh Delaunay), centroids in 3D, whose "
+                        "tetrahedral meshes are not Delaunay (doc/flow.md).");
+      prm.declare_entry("Sample lines",
+                        "",
+                        Patterns::Anything(),
+                        "Segments along which the matrix pressure of the final state is written "
+                        "to line_<name>.csv (columns s, x, y[, z], p_w; s = arc length from the "
+                        "start; the value of the cell containing each point): 'name: (x, y, z) "
+                        "(x, y, z) [number of points, default 1000]; ...'.");
       prm.leave_subsection();
     }
 
@@ -325,12 +362,15 @@ namespace porofrac
       const std::vector<std::string> matrix = {"Flow", "Matrix"}, fracture = {"Flow", "Fracture"};
       porosity                = prm.get_double(matrix, "Porosity");
       permeability            = prm.get_double(matrix, "Permeability");
+      permeability_expression = Utilities::trim(prm.get(matrix, "Permeability expression"));
       source                  = {{prm.get(matrix, "Source w"), prm.get(matrix, "Source nw")}};
       aperture                = prm.get_double(fracture, "Aperture");
       normal_transmissibility = prm.get_double(fracture, "Normal transmissibility");
       damaged_layer_thickness = prm.get_double(fracture, "Damaged layer thickness");
       damaged_layer_porosity  = prm.get_double(fracture, "Damaged layer porosity");
       reference_pressure      = prm.get_double(flow, "Reference pressure");
+      sample_lines            = prm.get(flow, "Sample lines");
+      cell_centres            = prm.get(flow, "Cell centres");
 
       stepping.final_time    = prm.get_double(flow, "Final time");
       stepping.initial_step  = prm.get_double(flow, "Initial time step");
@@ -364,6 +404,7 @@ namespace porofrac
       fracture_dirichlet                = parse_dirichlet(prm.get(bc, "Fracture"),
                                            rocks[fracture_rock],
                                            "Flow/Boundary conditions/Fracture");
+      matrix_flux = parse_flux(prm.get(bc, "Matrix flux"), "Flow/Boundary conditions/Matrix flux");
       validate();
     }
 
@@ -421,53 +462,83 @@ namespace porofrac
       check_input(normal_transmissibility > 0,
                   "Flow/Fracture/Normal transmissibility",
                   "must be positive");
+      for (const auto &q : matrix_flux)
+        check_input(matrix_dirichlet.count(q.first) == 0,
+                    "Flow/Boundary conditions/Matrix flux",
+                    "boundary id " + std::to_string(q.first) +
+                      " also has a Dirichlet condition (Flow/Boundary conditions/Matrix)");
     }
+
+    namespace
+    {
+      /// "id: name = value, name = value; ..." with names from @p allowed, as id -> name -> value.
+      std::map<types::boundary_id, std::map<std::string, double>>
+      parse_boundary_entries(const std::string           &text,
+                             const std::set<std::string> &allowed,
+                             const std::string           &parameter)
+      {
+        std::map<types::boundary_id, std::map<std::string, double>> result;
+        std::string                                                 names;
+        for (const auto &a : allowed)
+          names += (names.empty() ? "" : ", ") + a;
+        for (const std::string &entry : Utilities::split_string_list(text, ';'))
+          {
+            if (entry.empty())
+              continue;
+            const auto colon = entry.find(':');
+            check_input(colon != std::string::npos,
+                        parameter,
+                        "expected 'id: name = value, name = value', got '" + entry + "'");
+            int id = -1;
+            try
+              {
+                id = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
+              }
+            catch (...)
+              {
+              }
+            check_input(id >= 0 && id < int(geometry::first_fracture_boundary_id),
+                        parameter,
+                        "bad boundary id in '" + entry + "'");
+            check_input(result.count(id) == 0,
+                        parameter,
+                        "boundary id " + std::to_string(id) + " is given twice");
+            auto &values = result[id];
+            for (const std::string &item :
+                 Utilities::split_string_list(entry.substr(colon + 1), ','))
+              {
+                const auto eq = item.find('=');
+                check_input(eq != std::string::npos,
+                            parameter,
+                            "expected 'name = value' in '" + entry + "'");
+                const std::string key = Utilities::trim(item.substr(0, eq));
+                check_input(allowed.count(key) > 0,
+                            parameter,
+                            "unknown quantity '" + key + "' (" + names + ")");
+                try
+                  {
+                    values[key] = Utilities::string_to_double(Utilities::trim(item.substr(eq + 1)));
+                  }
+                catch (...)
+                  {
+                    throw InputError(parameter, "bad number in '" + item + "'");
+                  }
+                check_input(std::isfinite(values[key]),
+                            parameter,
+                            "the value in '" + item + "' is not finite");
+              }
+          }
+        return result;
+      }
+    } // namespace
 
     DirichletData
     parse_dirichlet(const std::string &text, const RockType &rock, const std::string &parameter)
     {
       DirichletData result;
-      for (const std::string &entry : Utilities::split_string_list(text, ';'))
+      for (auto &[id, values] :
+           parse_boundary_entries(text, {"p_w", "p_nw", "s_nw", "s_w"}, parameter))
         {
-          if (entry.empty())
-            continue;
-          const auto colon = entry.find(':');
-          check_input(colon != std::string::npos,
-                      parameter,
-                      "expected 'id: name = value, name = value', got '" + entry + "'");
-          int id = -1;
-          try
-            {
-              id = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
-            }
-          catch (...)
-            {
-            }
-          check_input(id >= 0 && id < int(geometry::first_fracture_boundary_id),
-                      parameter,
-                      "bad boundary id in '" + entry + "'");
-          std::map<std::string, double> values;
-          for (const std::string &item : Utilities::split_string_list(entry.substr(colon + 1), ','))
-            {
-              const auto eq = item.find('=');
-              check_input(eq != std::string::npos,
-                          parameter,
-                          "expected 'name = value' in '" + entry + "'");
-              const std::string key = Utilities::trim(item.substr(0, eq));
-              check_input(key == "p_w" || key == "p_nw" || key == "s_nw" || key == "s_w",
-                          parameter,
-                          "unknown quantity '" + key + "' (p_w, p_nw, s_nw, s_w)");
-              double v = 0;
-              try
-                {
-                  v = Utilities::string_to_double(Utilities::trim(item.substr(eq + 1)));
-                }
-              catch (...)
-                {
-                  throw InputError(parameter, "bad number in '" + item + "'");
-                }
-              values[key] = v;
-            }
           check_input(values.size() == 2,
                       parameter,
                       "give exactly two of p_w, p_nw, s_nw, s_w for boundary id " +
@@ -499,6 +570,25 @@ namespace porofrac
                 p = {{values["p_nw"] - pc, values["p_nw"]}};
             }
           result[id] = p;
+        }
+      return result;
+    }
+
+    FluxData
+    parse_flux(const std::string &text, const std::string &parameter)
+    {
+      FluxData result;
+      for (auto &[id, values] :
+           parse_boundary_entries(text, {"q_w", "q_nw", "Q_w", "Q_nw"}, parameter))
+        {
+          BoundaryFlux &flux = result[id];
+          flux.total         = values.count("Q_w") || values.count("Q_nw");
+          check_input(!flux.total || !(values.count("q_w") || values.count("q_nw")),
+                      parameter,
+                      "boundary id " + std::to_string(id) +
+                        " mixes fluxes per area (q) and total rates (Q)");
+          const std::string w = flux.total ? "Q_w" : "q_w", nw = flux.total ? "Q_nw" : "q_nw";
+          flux.rate = {{values.count(w) ? values[w] : 0., values.count(nw) ? values[nw] : 0.}};
         }
       return result;
     }

@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/flow/fracture_junctions.h>
 #include <porofrac/flow/tpfa_grid.h>
 #include <porofrac/io/text.h>
 
@@ -128,13 +129,13 @@ namespace porofrac
       nodes.resize(n_matrix_cells + n_fracture_cells + n_interfaces);
       for (const auto &cell : tria.active_cell_iterators())
         {
-          Node &node  = nodes[cell->active_cell_index()];
-          node.kind   = NodeKind::matrix;
-          node.rock   = matrix_rock;
-          node.centre = circumcentre<dim>(cell);
+          Node &node = nodes[cell->active_cell_index()];
+          node.kind  = NodeKind::matrix;
+          node.rock  = matrix_rock;
           Point<dim> centroid;
           for (unsigned int v = 0; v < dim + 1; ++v)
             centroid += cell->vertex(v) / double(dim + 1);
+          node.centre  = centres == Centres::circumcentre ? circumcentre<dim>(cell) : centroid;
           node.measure = simplex_measure<dim>(cell) * weight(axisymmetric, centroid);
         }
       for (unsigned int s = 0; s < n_fracture_cells; ++s)
@@ -181,7 +182,7 @@ namespace porofrac
                 inner += cell->vertex(v) / double(dim + 1);
               if ((centre - inner) * normal < 0)
                 normal = -normal;
-              const double d_K  = (centre - nodes[K].centre) * normal; // signed
+              const double d_K  = half_distance(nodes[K].centre, centre, normal); // signed
               const double area = measure * weight(axisymmetric, centre);
               if (d_K <= 0)
                 ++n_non_admissible;
@@ -192,7 +193,7 @@ namespace porofrac
                   const unsigned int L = cell->neighbor(f)->active_cell_index();
                   if (K < L)
                     {
-                      double d_a = d_K, d_b = (nodes[L].centre - centre) * normal;
+                      double d_a = d_K, d_b = half_distance(nodes[L].centre, centre, -normal);
                       if (d_a + d_b < 1e-2 * measure)
                         {
                           ++n_fallback;
@@ -271,65 +272,78 @@ namespace porofrac
 
 
     template <int dim>
+    double
+    TpfaGrid<dim>::one_sided_distance(const geometry::CutMesh<dim> &mesh,
+                                      const unsigned int            face,
+                                      const FractureJunction<dim>  &junction)
+    {
+      const double d = distance_to_junction(mesh, face, junction, centres == Centres::centroid);
+      if (d > 0)
+        return d;
+      // A circumcentre on or beyond the edge (3D, obtuse triangle): as for matrix cells at the
+      // boundary, a small positive distance.
+      ++n_non_admissible_fracture;
+      return 1e-3 * std::sqrt(mesh.fracture_faces[face].measure);
+    }
+
+
+
+    template <int dim>
     void
     TpfaGrid<dim>::add_fracture_node_connections(
       const geometry::CutMesh<dim>       &mesh,
       const bool                          axisymmetric,
       const std::set<types::boundary_id> &fracture_dirichlet_ids)
     {
-      const auto                                &tria = mesh.triangulation;
-      std::map<unsigned int, types::boundary_id> vertex_boundary_id;
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) &&
-              cell->face(f)->boundary_id() < geometry::first_fracture_boundary_id)
-            for (unsigned int v = 0; v < dim; ++v)
-              vertex_boundary_id[cell->face(f)->vertex_index(v)] = cell->face(f)->boundary_id();
-
-      for (const auto &fnode : mesh.fracture_nodes)
+      for (const auto &j : fracture_junctions(mesh))
         {
-          const unsigned int n_faces = fnode.faces.size();
-          const double       w       = weight(axisymmetric, fnode.location);
-          types::boundary_id id      = numbers::invalid_boundary_id;
-          if (fnode.on_boundary)
-            for (const unsigned int c : fnode.copies)
-              if (vertex_boundary_id.count(c))
-                id = vertex_boundary_id[c];
-          const bool dirichlet = fnode.on_boundary && fracture_dirichlet_ids.count(id);
+          const unsigned int n_faces   = j.faces.size();
+          const double       area      = j.measure * weight(axisymmetric, j.location);
+          const bool         dirichlet = fracture_dirichlet_ids.count(j.boundary_id) > 0;
           if (dirichlet || n_faces >= 3)
             {
               Node node;
               node.kind        = dirichlet ? NodeKind::dirichlet_fracture : NodeKind::intersection;
               node.rock        = fracture_rock;
               node.measure     = 0;
-              node.centre      = fnode.location;
-              node.boundary_id = id;
+              node.centre      = j.location;
+              node.boundary_id = j.boundary_id;
               nodes.push_back(node);
               if (!dirichlet)
                 ++n_intersections;
-              for (const unsigned int s : fnode.faces)
+              for (const unsigned int s : j.faces)
                 connections.push_back({ConnectionKind::fracture_node,
                                        n_matrix_cells + s,
                                        static_cast<unsigned int>(nodes.size() - 1),
                                        fracture_rock,
                                        fracture_rock,
-                                       w,
-                                       (mesh.fracture_faces[s].centre - fnode.location).norm(),
+                                       area,
+                                       one_sided_distance(mesh, s, j),
                                        0.});
             }
           else if (n_faces == 2)
             {
-              const unsigned int s0 = fnode.faces[0], s1 = fnode.faces[1];
+              const unsigned int s0 = j.faces[0], s1 = j.faces[1];
+              const bool         c  = centres == Centres::centroid;
+              double             d0 = distance_to_junction(mesh, s0, j, c);
+              double             d1 = distance_to_junction(mesh, s1, j, c);
+              if (dim == 3 && (d0 + d1 < 1e-2 * j.measure || d0 <= 0 || d1 <= 0))
+                {
+                  // 3D: circumcentres (nearly) together or in the wrong order across the edge.
+                  ++n_non_admissible_fracture;
+                  d0 = std::max(std::abs(d0), 5e-3 * j.measure);
+                  d1 = std::max(std::abs(d1), 5e-3 * j.measure);
+                }
               connections.push_back({ConnectionKind::fracture_fracture,
                                      n_matrix_cells + s0,
                                      n_matrix_cells + s1,
                                      fracture_rock,
                                      fracture_rock,
-                                     w,
-                                     (mesh.fracture_faces[s0].centre - fnode.location).norm(),
-                                     (mesh.fracture_faces[s1].centre - fnode.location).norm()});
+                                     area,
+                                     d0,
+                                     d1});
             }
-          // one face: a tip, no flux
+          // one face: a tip or a no-flow boundary point or edge
         }
     }
 
@@ -339,28 +353,23 @@ namespace porofrac
     TpfaGrid<dim>::TpfaGrid(const geometry::CutMesh<dim>       &mesh,
                             const bool                          axisymmetric,
                             const std::set<types::boundary_id> &matrix_dirichlet_ids,
-                            const std::set<types::boundary_id> &fracture_dirichlet_ids)
+                            const std::set<types::boundary_id> &fracture_dirichlet_ids,
+                            const Centres                       centres)
+        : centres(centres)
     {
-      check_input(dim == 2 || mesh.fracture_faces.empty(),
-                  "Physics",
-                  "two-phase flow in 3D is implemented for meshes without fractures only (the "
-                  "fracture-fracture connections through fracture edges are missing), and this "
-                  "mesh has " +
-                    std::to_string(mesh.fracture_faces.size()) + " fracture faces");
-      const auto &tria = mesh.triangulation;
-      n_matrix_cells   = tria.n_active_cells();
-      n_fracture_cells = mesh.fracture_faces.size();
-      n_interfaces     = 2 * n_fracture_cells;
-      n_intersections  = 0;
-      n_non_admissible = 0;
-      n_fallback       = 0;
+      const auto &tria          = mesh.triangulation;
+      n_matrix_cells            = tria.n_active_cells();
+      n_fracture_cells          = mesh.fracture_faces.size();
+      n_interfaces              = 2 * n_fracture_cells;
+      n_intersections           = 0;
+      n_non_admissible          = 0;
+      n_fallback                = 0;
+      n_non_admissible_fracture = 0;
 
       make_nodes(mesh, axisymmetric);
       add_matrix_connections(mesh, axisymmetric, matrix_dirichlet_ids);
       add_interface_connections(mesh, axisymmetric);
-      // Fracture-fracture connections through fracture nodes (2D; 3D meshes have no fractures).
-      if (dim == 2)
-        add_fracture_node_connections(mesh, axisymmetric, fracture_dirichlet_ids);
+      add_fracture_node_connections(mesh, axisymmetric, fracture_dirichlet_ids);
       porosity.assign(n_matrix_cells, 0.1);
       permeability.assign(n_matrix_cells, 1.);
       aperture.assign(n_fracture_cells, 1e-3);
@@ -387,8 +396,17 @@ namespace porofrac
         switch (c.kind)
           {
             case ConnectionKind::matrix_matrix:
-              c.transmissibility = c.area / (c.d_a / permeability[c.a] + c.d_b / permeability[c.b]);
-              break;
+              {
+                const double ka = permeability[c.a], kb = permeability[c.b];
+                double       resistance = c.d_a / ka + c.d_b / kb;
+                // A centre beyond the face (3D) and a permeability jump across it can make the
+                // signed resistance vanish or change sign: unsigned distances there.
+                const double unsigned_resistance = std::abs(c.d_a) / ka + std::abs(c.d_b) / kb;
+                if (resistance < 1e-2 * unsigned_resistance)
+                  resistance = unsigned_resistance;
+                c.transmissibility = c.area / resistance;
+                break;
+              }
             case ConnectionKind::matrix_boundary:
             case ConnectionKind::matrix_interface:
               c.transmissibility = c.area * permeability[c.a] / c.d_a;

@@ -8,6 +8,8 @@
 #include <porofrac/geometry/planar_graph_checks.h>
 #include <porofrac/geometry/polygon_mesher.h>
 #include <porofrac/geometry/size_guard.h>
+#include <porofrac/geometry/structured_mesh.h>
+#include <porofrac/io/expression.h>
 #include <porofrac/io/text.h>
 
 #include <cmath>
@@ -180,6 +182,58 @@ namespace porofrac
 
 
     template <int dim>
+    void
+    apply_boundary_regions(const std::string &text, RawMesh<dim> &raw)
+    {
+      const std::string parameter = "Geometry/Boundary regions";
+      for (const std::string &entry : Utilities::split_string_list(text, ';'))
+        {
+          if (entry.empty())
+            continue;
+          const auto colon = entry.find(':');
+          check_input(colon != std::string::npos,
+                      parameter,
+                      "expected 'id: condition', got '" + entry + "'");
+          int id = -1;
+          try
+            {
+              id = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
+            }
+          catch (...)
+            {
+            }
+          check_input(id >= 0 && id < int(first_fracture_boundary_id),
+                      parameter,
+                      "bad boundary id in '" + entry + "' (0-999)");
+          const auto condition =
+            io::parse_expressions<dim>({Utilities::trim(entry.substr(colon + 1))}, parameter);
+          unsigned int n_faces = 0;
+          for (auto &face : raw.boundary_faces)
+            {
+              if (face.tag >= 1000000)
+                continue; // already taken by an earlier region
+              Point<dim> centroid;
+              for (const unsigned int v : face.vertices)
+                centroid += raw.vertices[v] / double(dim);
+              if (condition->value(centroid) != 0)
+                {
+                  face.tag = 1000000 + id;
+                  ++n_faces;
+                }
+            }
+          check_input(n_faces > 0,
+                      parameter,
+                      "no outer boundary face has its centroid in region " + std::to_string(id) +
+                        " ('" + Utilities::trim(entry.substr(colon + 1)) + "')");
+        }
+      for (auto &face : raw.boundary_faces)
+        if (face.tag >= 1000000)
+          face.tag -= 1000000;
+    }
+
+
+
+    template <int dim>
     std::unique_ptr<CutMesh<dim>>
     make_cut_mesh(const GeometryParameters &prm)
     {
@@ -195,6 +249,9 @@ namespace porofrac
       check_input(dim == 2 || !prm.delaunay_flips,
                   "Geometry/Delaunay flips",
                   "Delaunay flips are implemented in 2D only");
+      check_input(dim == 3 || prm.structured_cells.empty(),
+                  "Geometry/Structured cells",
+                  "structured meshes are implemented for 3D boxes only");
       check_input(dim == 3 || prm.random_discs.count == 0,
                   "Geometry/Random discs/Count",
                   "random discs are 3D fractures");
@@ -209,10 +266,21 @@ namespace porofrac
         }
       else
         {
-          const PolygonNetwork network  = polygon_network_from_parameters(prm, &log.random_discs);
-          const auto           estimate = estimate_cells(network, prm);
-          check_cell_count(estimate.cells, prm, estimate.parameter, "about");
-          raw = mesh_polygon_network(network, prm);
+          const PolygonNetwork network = polygon_network_from_parameters(prm, &log.random_discs);
+          if (!prm.structured_cells.empty())
+            {
+              const std::string parameter = "Geometry/Structured cells";
+              check_input(prm.domain == "box", parameter, "needs Domain = box");
+              const auto cells = parse_structured_cells(prm.structured_cells, parameter);
+              check_cell_count(6. * cells[0] * cells[1] * cells[2], prm, parameter, "exactly");
+              raw = structured_box_mesh(network, cells, parameter);
+            }
+          else
+            {
+              const auto estimate = estimate_cells(network, prm);
+              check_cell_count(estimate.cells, prm, estimate.parameter, "about");
+              raw = mesh_polygon_network(network, prm);
+            }
         }
       log.add("gmsh", timer);
       check_cell_count(raw.cells.size() * std::pow(2., dim * prm.global_refinements),
@@ -223,6 +291,7 @@ namespace porofrac
         raw.refine_uniformly();
       if (prm.delaunay_flips)
         raw.make_delaunay();
+      apply_boundary_regions(prm.boundary_regions, raw);
       log.add("refinement", timer);
       auto mesh = std::make_unique<CutMesh<dim>>(raw);
       mesh->build_log.phases.insert(mesh->build_log.phases.begin(),

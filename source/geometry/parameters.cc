@@ -78,6 +78,23 @@ namespace porofrac
                         Patterns::Anything(),
                         "Boxes with their own cell size: '(x0, y0) (x1, y1): h; ...', in 3D "
                         "'(x0, y0, z0) (x1, y1, z1): h; ...', in m.");
+      prm.declare_entry("Boundary regions",
+                        "",
+                        Patterns::Anything(),
+                        "Outer boundary faces that get another boundary id: 'id: condition; "
+                        "...', a condition being a muparser expression of x, y (, z), true "
+                        "(non-zero) at the face's centroid, e.g. '10: x < 1e-9 && z > 90'. The "
+                        "first matching region wins; ids 0-999. Applied to the generated or read "
+                        "mesh after the global refinements (a face is in or out as a whole: the "
+                        "mesh need not follow the region's border).");
+      prm.declare_entry("Structured cells",
+                        "",
+                        Patterns::Anything(),
+                        "3D box domains: 'nx, ny, nz' meshes the box as a Cartesian grid of "
+                        "nx x ny x nz cells, each split into six tetrahedra (Kuhn), instead of "
+                        "gmsh's unstructured mesh; the fractures must be unions of grid faces "
+                        "(polygons with corners on grid lines of a grid plane). Two-point fluxes "
+                        "with circumcentres are those of the Cartesian grid there. Empty: gmsh.");
       prm.declare_entry("Global refinements",
                         "0",
                         Patterns::Integer(0, 8),
@@ -142,6 +159,8 @@ namespace porofrac
       transition_distance = prm.get_double("Transition distance");
       size_expression     = prm.get("Mesh size expression");
       refinement_regions  = prm.get("Refinement regions");
+      boundary_regions    = prm.get("Boundary regions");
+      structured_cells    = Utilities::trim(prm.get("Structured cells"));
       global_refinements  = prm.get_integer("Global refinements");
       maximum_cells       = prm.get_double("Maximum cells");
       delaunay_flips_mode = prm.get("Delaunay flips");

@@ -32,6 +32,9 @@ namespace porofrac
       double                               initial_porosity     = 0; ///< phi_0
       double                               initial_permeability = 0; ///< K_0 (m^2)
       double                               initial_aperture     = 0; ///< d_0 (m)
+      /// Neumann inflow through matrix boundary faces per face area (m/s by boundary id; total
+      /// rates divided by the faces' area).
+      FaceFlux matrix_flux;
     };
 
     /**

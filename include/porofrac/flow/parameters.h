@@ -88,6 +88,16 @@ namespace porofrac
 
     /// Dirichlet phase pressures (p^w, p^nw) in Pa by boundary id.
     using DirichletData = std::map<dealii::types::boundary_id, std::array<double, 2>>;
+    /// Inflow of each phase through the faces of one boundary id: per face area (m/s), or with
+    /// `total` the whole rate (m^3/s), spread over the faces in proportion to their area.
+    struct BoundaryFlux
+    {
+      std::array<double, 2> rate{{0., 0.}};
+      bool                  total = false;
+    };
+    using FluxData = std::map<dealii::types::boundary_id, BoundaryFlux>;
+    /// Inflow (q^w, q^nw) per face area in m/s by boundary id.
+    using FaceFlux = std::map<dealii::types::boundary_id, std::array<double, 2>>;
 
     /**
      * The deck's "Flow" subsection: the two rock types (sub-subsections Matrix and Fracture,
@@ -115,6 +125,8 @@ namespace porofrac
       std::array<std::array<double, 2>, 2> initial_pressure{{{{4e6, 4e6}}, {{1e5, 1e5}}}};
       double                               porosity     = 0.15;  ///< phi_0 (-)
       double                               permeability = 5e-20; ///< K_0 (m^2)
+      /// Matrix permeability as an expression of x, y (, z) at cell centroids; empty: K_0.
+      std::string permeability_expression;
       /// Matrix sources h^w, h^nw (1/s): muparser expressions of x, y (, z).
       std::array<std::string, 2> source{{"0", "0"}};
       double                     aperture                = 1e-3; ///< d_0 (m)
@@ -123,6 +135,12 @@ namespace porofrac
       double                     damaged_layer_porosity  = 0;    ///< phi_a (-)
       DirichletData              matrix_dirichlet;
       DirichletData              fracture_dirichlet;
+      /// Neumann inflow through matrix boundary faces (ids without a Dirichlet condition).
+      FluxData matrix_flux;
+      /// auto | circumcentre | centroid (TpfaGrid::Centres; auto: circumcentres in 2D only).
+      std::string cell_centres = "auto";
+      /// "name: (x, y, z) (x, y, z) [n]; ..." (parse_sample_lines), written at the end.
+      std::string sample_lines;
       /// Pressures are stored relative to this value (Pa).
       double           reference_pressure = 0;
       NewtonParameters newton;
@@ -136,6 +154,11 @@ namespace porofrac
      */
     DirichletData
     parse_dirichlet(const std::string &text, const RockType &rock, const std::string &parameter);
+
+    /// Parses "id: q_w = v, q_nw = v; ..." (per area) or "id: Q_w = v, Q_nw = v" (total rates),
+    /// a missing phase 0; errors name @p parameter.
+    FluxData
+    parse_flux(const std::string &text, const std::string &parameter);
 
     /**
      * A law built outside a deck (programs, tests): the registered law @p name with the entries

@@ -4,6 +4,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <porofrac/flow/fracture_junctions.h>
 #include <porofrac/flow/rock_type.h>
 #include <porofrac/geometry/cut_mesh.h>
 
@@ -20,7 +21,8 @@ namespace porofrac
      * Two-point flux connectivity of the hybrid-dimensional model (paper Section 4.1, Fig. 5),
      * as a graph of flow nodes joined by two-point connections:
      *
-     * - matrix cells (centre = circumcentre), numbered like active_cell_index();
+     * - matrix cells (centre = circumcentre, or centroid with Centres::centroid), numbered like
+     *   active_cell_index();
      * - fracture cells, one per fracture face sigma (measure |sigma| d_f), numbered after them;
      * - matrix-fracture interface nodes K sigma, one per side of every fracture face (massless:
      *   no damaged layer);
@@ -35,13 +37,16 @@ namespace porofrac
      * - matrix-matrix: |e| / (d_K,e/K_K + d_L,e/K_L) (signed circumcentre distances);
      * - matrix-boundary and matrix-interface: |e| K_K / d_K,e;
      * - interface-fracture: |sigma| Lambda_f (eq. (3));
-     * - fracture-fracture through a node s with two faces: harmonic mean of the half
-     *   transmissibilities (d_f^3/12) |s| / dist(x_sigma, s); three or more faces, or a Dirichlet
-     *   node: one half transmissibility per face to the node.
-     * With `axisymmetric`, measures carry the weight 2 pi r with r = the second coordinate.
-     * Fracture-fracture connections exist in 2D only (3D fractures would need connections
-     * through fracture edges): a 3D mesh with fracture faces is an InputError, a 3D mesh without
-     * fractures is fine.
+     * - fracture-fracture through a junction s (FractureJunction: a fracture node in 2D, an edge
+     *   of the fracture triangles in 3D) with two faces: harmonic mean of the half
+     *   transmissibilities (d_f^3/12) |s| / d(x_sigma, s) (|s| = 1 in 2D, the edge length in
+     *   3D; d from distance_to_junction, in 3D from the triangle's circumcentre normal to the
+     *   edge); three or more faces (an intersection point in 2D, an intersection line segment in
+     *   3D), or a Dirichlet junction: one half transmissibility per face to a junction node.
+     * Matrix-matrix connections whose signed resistance d_K/K_K + d_L/K_L is below 1e-2 of the
+     * unsigned one (a centre beyond the face and a permeability jump across it) use unsigned
+     * distances. With `axisymmetric`, measures carry the weight 2 pi r with r = the second
+     * coordinate.
      */
     template <int dim>
     class TpfaGrid
@@ -89,10 +94,36 @@ namespace porofrac
         double transmissibility = 0;
       };
 
+      /// Where a cell's pressure lives (CellCentres): the paper's circumcentres (exact two-point
+      /// fluxes on Delaunay meshes), or centroids with the projected half transmissibilities.
+      enum class Centres
+      {
+        circumcentre,
+        centroid
+      };
+
       TpfaGrid(const geometry::CutMesh<dim>       &mesh,
                const bool                          axisymmetric,
                const std::set<types::boundary_id> &matrix_dirichlet_ids,
-               const std::set<types::boundary_id> &fracture_dirichlet_ids);
+               const std::set<types::boundary_id> &fracture_dirichlet_ids,
+               const Centres                       centres = Centres::circumcentre);
+
+      /**
+       * The distance of a half transmissibility |e| K / d from the cell centre @p x to the face
+       * through @p face_centre with unit normal @p normal pointing away from @p x: circumcentres
+       * (n . (x_e - x)), signed; centroids |x_e - x|^2 / (n . (x_e - x)), the projection of the
+       * two-point gradient on n used by the TPFA of PorePy and MRST (positive for convex cells).
+       */
+      double
+      half_distance(const Point<dim>     &x,
+                    const Point<dim>     &face_centre,
+                    const Tensor<1, dim> &normal) const
+      {
+        const Tensor<1, dim> d = face_centre - x;
+        return centres == Centres::circumcentre ? d * normal : d.norm_square() / (d * normal);
+      }
+
+      const Centres centres;
 
       /// Recomputes every transmissibility from permeability, aperture and Lambda_f; validates
       /// them (InputError naming Flow/...).
@@ -141,6 +172,10 @@ namespace porofrac
       /// order (unsigned distances, inexact). Boundary and interface faces with d_K,e <= 0 use
       /// max(d_K,e, 1e-3 diameter).
       unsigned int n_fallback;
+      /// 3D fracture connections whose circumcentre distance to the edge was not positive (or
+      /// whose pair of distances summed to less than 1e-2 |edge|): unsigned distances, at least
+      /// 5e-3 |edge| (pairs) or 1e-3 sqrt|sigma| (one-sided).
+      unsigned int n_non_admissible_fracture;
 
       /// Per-cell inputs: porosity and isotropic permeability (m^2) of matrix cells, aperture d_f
       /// (m) of fracture cells, normal transmissibility Lambda_f (m).
@@ -169,8 +204,13 @@ namespace porofrac
       /// Interface-fracture connections (eq. (3)).
       void
       add_interface_connections(const geometry::CutMesh<dim> &mesh, const bool axisymmetric);
-      /// Fracture-fracture connections through the fracture nodes, intersection and Dirichlet
-      /// nodes (2D).
+      /// Half-transmissibility distance of fracture face @p face to @p junction, made positive.
+      double
+      one_sided_distance(const geometry::CutMesh<dim> &mesh,
+                         const unsigned int            face,
+                         const FractureJunction<dim>  &junction);
+      /// Fracture-fracture connections through the fracture junctions, intersection and
+      /// Dirichlet nodes.
       void
       add_fracture_node_connections(const geometry::CutMesh<dim>       &mesh,
                                     const bool                          axisymmetric,

@@ -192,6 +192,13 @@ namespace porofrac
       EnergyExchange
       energy_exchange(const State &state, const double dt) const;
 
+      /// Phase flux a -> b over connection c (m^3/s) with derivatives with respect to
+      /// (p^w_a, p^nw_a, p^w_b, p^nw_b).
+      double
+      flux(const typename TpfaGrid<dim>::Connection &c,
+           const State                              &state,
+           const unsigned int                        phase,
+           std::array<double, 4>                    &derivative) const;
       /// Newton for one step from old_state to state (state holds the initial guess). Never
       /// throws on failure: converged = false (non-convergence, non-finite values, singular
       /// matrix).
@@ -311,14 +318,6 @@ namespace porofrac
                    stagnation_fallback_holds(const double mass_defect, const double update) const;
       mutable bool entry_slope_active = false;
       double       mean_pore_volume   = 0;
-
-      /// Phase flux a -> b over connection c with derivatives with respect to
-      /// (p^w_a, p^nw_a, p^w_b, p^nw_b).
-      double
-      flux(const typename TpfaGrid<dim>::Connection &c,
-           const State                              &state,
-           const unsigned int                        phase,
-           std::array<double, 4>                    &derivative) const;
     };
   } // namespace flow
 } // namespace porofrac

@@ -39,6 +39,8 @@ namespace porofrac
       double       transition_distance = 0.;   ///< distance over which the size grows (m)
       std::string  size_expression;            ///< optional gmsh MathEval size field in x, y, z
       std::string  refinement_regions;         ///< "(x0, y0) (x1, y1): h; ..."
+      std::string  boundary_regions;           ///< "id: condition; ..." relabels outer faces
+      std::string  structured_cells; ///< 3D box: "nx, ny, nz" Kuhn-split Cartesian grid, or empty
       unsigned int global_refinements = 0;
       double       maximum_cells      = 5e6; ///< larger meshes are refused before they are made
       /// "auto", "true" or "false"; auto = flips in 2D where two-phase flow runs on the mesh.
