@@ -141,6 +141,41 @@ namespace porofrac
 
 
 
+      /// The flow grid's counts and its TPFA admissibility, to the report and summary.json.
+      template <int dim>
+      void
+      report_flow_grid(const flow::TpfaGrid<dim>       &grid,
+                       const flow::TwoPhaseSolver<dim> &solver,
+                       io::RunContext                  &context)
+      {
+        const bool circumcentres = grid.centres == flow::TpfaGrid<dim>::Centres::circumcentre;
+        context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
+                       << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
+                       << " interface nodes, " << grid.n_intersections << " intersection nodes, "
+                       << solver.n_unknowns() << " unknowns" << std::endl
+                       << "Flow: " << grid.n_non_admissible << " cell faces with the "
+                       << (circumcentres ? "circumcentre" : "centroid") << " on the wrong side, "
+                       << grid.n_fallback
+                       << (dim == 2 ? " connections of cocircular cells (centres merged)" :
+                                      " connections of cocircular cells or centres out of order "
+                                      "(merged or unsigned distances)")
+                       << std::endl;
+        if (dim == 3 && grid.n_fracture_cells > 0)
+          context.report << "Flow: " << grid.n_non_admissible_fracture
+                         << " fracture connections of cocircular triangles or with a centre on or "
+                            "beyond the edge (merged or unsigned distances)"
+                         << std::endl;
+        context.summary["n_unknowns_flow"] = solver.n_unknowns();
+        io::Json &admissibility            = context.summary["flow_mesh"];
+        admissibility["cell_centres"]      = circumcentres ? "circumcentre" : "centroid";
+        admissibility["n_non_admissible_matrix_faces"]         = grid.n_non_admissible;
+        admissibility["n_matrix_fallback_connections"]         = grid.n_fallback;
+        admissibility["n_non_admissible_fracture_connections"] = grid.n_non_admissible_fracture;
+        admissibility["n_intersection_nodes"]                  = grid.n_intersections;
+      }
+
+
+
       template <int dim>
       FlowRun<dim>::FlowRun(const PhysicsParameters         &parameters,
                             const geometry::CutMesh<dim>    &mesh,
@@ -166,28 +201,8 @@ namespace porofrac
         solver.timer = &context.timer;
         if (context.communicator != MPI_COMM_SELF)
           solver.distribute(context.communicator, grid.node_owners(cell_owner));
-        context.report << "Flow: " << grid.n_matrix_cells << " matrix cells, "
-                       << grid.n_fracture_cells << " fracture cells, " << grid.n_interfaces
-                       << " interface nodes, " << grid.n_intersections << " intersection nodes, "
-                       << solver.n_unknowns() << " unknowns" << std::endl
-                       << "Flow: " << grid.n_non_admissible
-                       << " cell faces with the circumcentre on the wrong side, " << grid.n_fallback
-                       << (dim == 2 ? " connections of cocircular cells (centres merged)" :
-                                      " connections of cocircular cells or centres out of order "
-                                      "(merged or unsigned distances)")
-                       << std::endl;
-        if (dim == 3 && grid.n_fracture_cells > 0)
-          context.report << "Flow: " << grid.n_non_admissible_fracture
-                         << " fracture connections with the triangle circumcentre on or beyond "
-                            "the edge (unsigned distances)"
-                         << std::endl;
-        context.summary["n_unknowns_flow"]                     = solver.n_unknowns();
-        io::Json &admissibility                                = context.summary["flow_mesh"];
-        admissibility["n_non_admissible_matrix_faces"]         = grid.n_non_admissible;
-        admissibility["n_matrix_fallback_connections"]         = grid.n_fallback;
-        admissibility["n_non_admissible_fracture_connections"] = grid.n_non_admissible_fracture;
-        admissibility["n_intersection_nodes"]                  = grid.n_intersections;
-        totals.initial_volumes                                 = solver.phase_volumes(solver.state);
+        report_flow_grid(grid, solver, context);
+        totals.initial_volumes = solver.phase_volumes(solver.state);
       }
 
 
@@ -374,8 +389,10 @@ namespace porofrac
                                    solver.linear_statistics(),
                                    context.report);
 
-        summary["boundary_fluxes"] =
-          flow::boundary_fluxes(mesh, solver, model.matrix_flux, axisymmetric);
+        const auto balances =
+          flow::boundary_balances(mesh, solver, model.matrix_flux, axisymmetric);
+        flow::report_boundary_balances(balances, context.report);
+        summary["boundary_fluxes"] = flow::to_json(balances);
         if (writer)
           write_sample_lines();
 

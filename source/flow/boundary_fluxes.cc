@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/flow/boundary_fluxes.h>
 
+#include <cmath>
+#include <iomanip>
 #include <map>
 
 namespace porofrac
@@ -9,12 +11,6 @@ namespace porofrac
   {
     namespace
     {
-      struct BoundarySums
-      {
-        std::array<double, 2> outflow{{0., 0.}};
-        double                area = 0, pressure_area = 0;
-      };
-
       /// Measure (times 2 pi r if axisymmetric), centre and unit normal of a simplex face.
       template <int dim, typename Face>
       double
@@ -44,16 +40,16 @@ namespace porofrac
 
 
     template <int dim>
-    io::Json
-    boundary_fluxes(const geometry::CutMesh<dim> &mesh,
-                    const TwoPhaseSolver<dim>    &solver,
-                    const FaceFlux               &matrix_flux,
-                    const bool                    axisymmetric)
+    std::map<types::boundary_id, BoundaryBalance>
+    boundary_balances(const geometry::CutMesh<dim> &mesh,
+                      const TwoPhaseSolver<dim>    &solver,
+                      const FaceFlux               &matrix_flux,
+                      const bool                    axisymmetric)
     {
-      const auto                              &grid  = solver.grid;
-      const auto                              &state = solver.state;
-      std::map<types::boundary_id, BoundarySums> sums;
-      std::array<double, 4>                    d;
+      const auto                                   &grid  = solver.grid;
+      const auto                                   &state = solver.state;
+      std::map<types::boundary_id, BoundaryBalance> sums;
+      std::array<double, 4>                         d;
       // Dirichlet nodes: the flux of every connection into one.
       for (const auto &c : grid.connections)
         if (grid.is_dirichlet(c.b) && !grid.is_dirichlet(c.a))
@@ -65,7 +61,7 @@ namespace porofrac
             if (node.kind == TpfaGrid<dim>::NodeKind::dirichlet_matrix)
               {
                 s.area += c.area;
-                s.pressure_area += c.area * solver.pressure(state, c.b, 0);
+                s.mean_pressure_w += c.area * solver.pressure(state, c.b, 0);
               }
           }
       // Flux faces: the prescribed inflow, and the face pressure of the two-point flux.
@@ -84,33 +80,65 @@ namespace porofrac
               const double distance =
                 std::max(std::abs(grid.half_distance(grid.nodes[K].centre, centre, n)),
                          1e-3 * cell->diameter());
-              const double eta = solver.rocks[matrix_rock].mobility(
-                0, solver.saturation(state, K, matrix_rock));
+              const double eta =
+                solver.rocks[matrix_rock].mobility(0, solver.saturation(state, K, matrix_rock));
               s.area += area;
-              s.pressure_area +=
-                area * (solver.pressure(state, K, 0) + q[0] * distance / (grid.permeability[K] * eta));
+              s.mean_pressure_w += area * (solver.pressure(state, K, 0) +
+                                           q[0] * distance / (grid.permeability[K] * eta));
             }
+      for (auto &entry : sums)
+        if (entry.second.area > 0)
+          entry.second.mean_pressure_w /= entry.second.area;
+      return sums;
+    }
+
+
+
+    io::Json
+    to_json(const std::map<types::boundary_id, BoundaryBalance> &balances)
+    {
       io::Json result = io::Json::object();
-      for (const auto &[id, s] : sums)
+      for (const auto &[id, b] : balances)
         {
-          io::Json &entry       = result[std::to_string(id)];
-          entry["outflow_w"]    = s.outflow[0];
-          entry["outflow_nw"]   = s.outflow[1];
-          entry["area"]         = s.area;
-          entry["mean_pressure_w"] = s.area > 0 ? s.pressure_area / s.area : 0.;
+          io::Json &entry          = result[std::to_string(id)];
+          entry["outflow_w"]       = b.outflow[0];
+          entry["outflow_nw"]      = b.outflow[1];
+          entry["area"]            = b.area;
+          entry["mean_pressure_w"] = b.mean_pressure_w;
         }
       return result;
     }
 
-    template io::Json
-    boundary_fluxes(const geometry::CutMesh<2> &,
-                    const TwoPhaseSolver<2> &,
-                    const FaceFlux &,
-                    const bool);
-    template io::Json
-    boundary_fluxes(const geometry::CutMesh<3> &,
-                    const TwoPhaseSolver<3> &,
-                    const FaceFlux &,
-                    const bool);
+
+
+    void
+    report_boundary_balances(const std::map<types::boundary_id, BoundaryBalance> &balances,
+                             std::ostream                                        &report)
+    {
+      double largest = 0;
+      for (const auto &entry : balances)
+        for (const double q : entry.second.outflow)
+          largest = std::max(largest, std::abs(q));
+      const auto shown = [largest](const double q) {
+        return std::abs(q) <= 1e-12 * largest ? 0. : q;
+      };
+      const auto flags = report.flags();
+      for (const auto &[id, b] : balances)
+        report << "Flow: boundary " << id << ": outflow of w " << std::scientific
+               << std::setprecision(4) << shown(b.outflow[0]) << ", of nw " << shown(b.outflow[1])
+               << " m^3/s; mean p_w " << b.mean_pressure_w << " Pa" << std::endl;
+      report.flags(flags);
+    }
+
+    template std::map<types::boundary_id, BoundaryBalance>
+    boundary_balances(const geometry::CutMesh<2> &,
+                      const TwoPhaseSolver<2> &,
+                      const FaceFlux &,
+                      const bool);
+    template std::map<types::boundary_id, BoundaryBalance>
+    boundary_balances(const geometry::CutMesh<3> &,
+                      const TwoPhaseSolver<3> &,
+                      const FaceFlux &,
+                      const bool);
   } // namespace flow
 } // namespace porofrac

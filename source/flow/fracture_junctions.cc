@@ -58,7 +58,7 @@ namespace porofrac
     {
       const auto                         boundary = outer_boundary_ids(mesh);
       std::vector<FractureJunction<dim>> junctions;
-      const auto &nodes = mesh.fracture_nodes;
+      const auto                        &nodes = mesh.fracture_nodes;
       if constexpr (dim == 2)
         for (const auto &node : nodes)
           {
@@ -117,8 +117,8 @@ namespace porofrac
         return f.centre.distance(j.location);
       else
         {
-          const auto   &nodes = mesh.fracture_nodes;
-          unsigned int  opposite = f.nodes[0];
+          const auto  &nodes    = mesh.fracture_nodes;
+          unsigned int opposite = f.nodes[0];
           for (const unsigned int n : f.nodes)
             if (n != j.ends[0] && n != j.ends[1])
               opposite = n;

@@ -65,7 +65,8 @@ namespace porofrac
           std::smatch m;
           check_input(std::regex_match(entry, m, pattern),
                       parameter,
-                      "expected 'name: " + std::string(dim == 2 ? "(x, y) (x, y)" : "(x, y, z) (x, y, z)") +
+                      "expected 'name: " +
+                        std::string(dim == 2 ? "(x, y) (x, y)" : "(x, y, z) (x, y, z)") +
                         " [number of points]', got '" + entry + "'");
           SampleLine<dim> line;
           line.name = m[1];
@@ -108,8 +109,8 @@ namespace porofrac
       auto                      hint = tria.end();
       for (unsigned int k = 0; k < line.n_points; ++k)
         {
-          const double     t = double(k) / (line.n_points - 1);
-          const Point<dim> p = line.start + t * (line.end - line.start);
+          const double     t     = double(k) / (line.n_points - 1);
+          const Point<dim> p     = line.start + t * (line.end - line.start);
           auto             found = tria.end();
           if (hint != tria.end())
             {

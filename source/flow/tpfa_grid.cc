@@ -80,6 +80,17 @@ namespace porofrac
           }
       }
 
+      /// d_a/k_a + d_b/k_b; where a centre beyond the face (3D) and a jump of k across it make
+      /// this signed resistance vanish or change sign, the unsigned one.
+      double
+      resistance(const double d_a, const double k_a, const double d_b, const double k_b)
+      {
+        const double signed_resistance   = d_a / k_a + d_b / k_b;
+        const double unsigned_resistance = std::abs(d_a) / k_a + std::abs(d_b) / k_b;
+        return signed_resistance < 1e-2 * unsigned_resistance ? unsigned_resistance :
+                                                                signed_resistance;
+      }
+
       template <int dim>
       double
       weight(const bool axisymmetric, const Point<dim> &x)
@@ -98,10 +109,16 @@ namespace porofrac
                                    const Point<dim> &centre) const
     {
       // Two circumcentres that (nearly) coincide: the pair is cocircular, the exact two-point
-      // flux has T -> infinity; a distance of 1e-2 |sigma| keeps their pressures together.
-      if (d_a + d_b >= -1e-6 * measure)
+      // flux has T -> infinity. 2D: a distance of 1e-2 |sigma| keeps their pressures together;
+      // 3D: the true distance, at least 1e-5 sqrt|sigma| (the six tetrahedra of a cube of a
+      // structured mesh then act as one cell to 1e-5).
+      const double length = dim == 2 ? measure : std::sqrt(measure);
+      if (d_a + d_b >= -1e-6 * length)
         {
-          d_a = d_b = 5e-3 * measure;
+          if (dim == 2)
+            d_a = d_b = 5e-3 * measure;
+          else
+            d_a = d_b = 0.5 * std::max(d_a + d_b, 1e-5 * length);
           return;
         }
       // Circumcentres in the wrong order: the two-point flux (13) would have the wrong sign. In
@@ -115,8 +132,8 @@ namespace porofrac
                            "= auto or true (a material interface there is never flipped: "
                            "refine the mesh at it)");
       // 3D (no flips yet): unsigned distances, a consistent but not exact two-point flux.
-      d_a = std::max(std::abs(d_a), 5e-3 * measure);
-      d_b = std::max(std::abs(d_b), 5e-3 * measure);
+      d_a = std::max(std::abs(d_a), 5e-6 * length);
+      d_b = std::max(std::abs(d_b), 5e-6 * length);
     }
 
 
@@ -194,7 +211,7 @@ namespace porofrac
                   if (K < L)
                     {
                       double d_a = d_K, d_b = half_distance(nodes[L].centre, centre, -normal);
-                      if (d_a + d_b < 1e-2 * measure)
+                      if (d_a + d_b < 1e-2 * (dim == 2 ? measure : std::sqrt(measure)))
                         {
                           ++n_fallback;
                           merge_or_refuse(d_a, d_b, measure, centre);
@@ -327,12 +344,18 @@ namespace porofrac
               const bool         c  = centres == Centres::centroid;
               double             d0 = distance_to_junction(mesh, s0, j, c);
               double             d1 = distance_to_junction(mesh, s1, j, c);
-              if (dim == 3 && (d0 + d1 < 1e-2 * j.measure || d0 <= 0 || d1 <= 0))
+              if (dim == 3 && d0 + d1 < 1e-2 * j.measure)
                 {
-                  // 3D: circumcentres (nearly) together or in the wrong order across the edge.
+                  // 3D: circumcentres (nearly) together, as for the two triangles of a grid
+                  // square, or in the wrong order across the edge (as merge_or_refuse).
                   ++n_non_admissible_fracture;
-                  d0 = std::max(std::abs(d0), 5e-3 * j.measure);
-                  d1 = std::max(std::abs(d1), 5e-3 * j.measure);
+                  if (d0 + d1 >= -1e-6 * j.measure)
+                    d0 = d1 = 0.5 * std::max(d0 + d1, 1e-5 * j.measure);
+                  else
+                    {
+                      d0 = std::max(std::abs(d0), 5e-6 * j.measure);
+                      d1 = std::max(std::abs(d1), 5e-6 * j.measure);
+                    }
                 }
               connections.push_back({ConnectionKind::fracture_fracture,
                                      n_matrix_cells + s0,
@@ -396,17 +419,9 @@ namespace porofrac
         switch (c.kind)
           {
             case ConnectionKind::matrix_matrix:
-              {
-                const double ka = permeability[c.a], kb = permeability[c.b];
-                double       resistance = c.d_a / ka + c.d_b / kb;
-                // A centre beyond the face (3D) and a permeability jump across it can make the
-                // signed resistance vanish or change sign: unsigned distances there.
-                const double unsigned_resistance = std::abs(c.d_a) / ka + std::abs(c.d_b) / kb;
-                if (resistance < 1e-2 * unsigned_resistance)
-                  resistance = unsigned_resistance;
-                c.transmissibility = c.area / resistance;
-                break;
-              }
+              c.transmissibility =
+                c.area / resistance(c.d_a, permeability[c.a], c.d_b, permeability[c.b]);
+              break;
             case ConnectionKind::matrix_boundary:
             case ConnectionKind::matrix_interface:
               c.transmissibility = c.area * permeability[c.a] / c.d_a;
@@ -415,7 +430,8 @@ namespace porofrac
               c.transmissibility = c.area * normal_transmissibility;
               break;
             case ConnectionKind::fracture_fracture:
-              c.transmissibility = c.area / (c.d_a / conductivity(c.a) + c.d_b / conductivity(c.b));
+              c.transmissibility =
+                c.area / resistance(c.d_a, conductivity(c.a), c.d_b, conductivity(c.b));
               break;
             case ConnectionKind::fracture_node:
               c.transmissibility = c.area * conductivity(c.a) / c.d_a;

@@ -135,8 +135,7 @@ namespace porofrac
         }
       for (const auto &f : network.fractures)
         {
-          check_input(std::abs(fracture_area[f.id] - f.polygon.area()) <=
-                        1e-9 * f.polygon.area(),
+          check_input(std::abs(fracture_area[f.id] - f.polygon.area()) <= 1e-9 * f.polygon.area(),
                       parameter,
                       "fracture " + std::to_string(f.id) +
                         " is not a union of faces of the structured grid (its grid faces cover " +

@@ -11,6 +11,9 @@
 #include <porofrac/geometry/mesh_generator.h>
 #include <porofrac/geometry/parameters.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -78,6 +81,70 @@ namespace flow_test
     grid.aperture.assign(grid.n_fracture_cells, 1e-3);
     grid.normal_transmissibility = 1e-10;
     grid.update_transmissibilities();
+  }
+
+  /// The unit cube meshed by gmsh with 3D polygon @p fractures, or, with @p structured
+  /// ("n, n, n"), a Kuhn-split Cartesian grid.
+  inline std::unique_ptr<geometry::CutMesh<3>>
+  unit_cube(const std::string &fractures,
+            const double       h          = 0.25,
+            const double       hf         = 0.125,
+            const std::string &structured = "")
+  {
+    geometry::GeometryParameters prm;
+    prm.domain              = "box";
+    prm.box                 = "(0, 0, 0) (1, 1, 1)";
+    prm.fractures           = fractures;
+    prm.mesh_size           = h;
+    prm.fracture_mesh_size  = hf;
+    prm.transition_distance = 0.2;
+    prm.structured_cells    = structured;
+    return geometry::make_cut_mesh<3>(prm);
+  }
+
+  /**
+   * max |J - J_FD| / max |J| of the analytic Jacobian of @p solver at @p state (old state
+   * @p old, time step @p dt) against centred differences (step 1e-2 Pa); an entry missing from
+   * the sparsity pattern is reported.
+   */
+  template <int dim>
+  double
+  jacobian_error(flow::TwoPhaseSolver<dim>                       &solver,
+                 const typename flow::TwoPhaseSolver<dim>::State &state,
+                 const typename flow::TwoPhaseSolver<dim>::State &old,
+                 const double                                     dt)
+  {
+    // PV_old is the pore volume at begin_time_step(): store it for the old state.
+    solver.state = old;
+    solver.begin_time_step();
+    dealii::Vector<double> r0, rp, rm;
+    solver.assemble(state, old, dt, r0, &solver.jacobian);
+    double err = 0, jmax = 0;
+    for (unsigned int i = 0; i < solver.grid.n_nodes(); ++i)
+      for (unsigned int phase = 0; phase < 2; ++phase)
+        {
+          const unsigned int col = solver.dof(i, phase);
+          if (col == dealii::numbers::invalid_unsigned_int)
+            continue;
+          const double h  = 1e-2;
+          auto         sp = state, sm = state;
+          sp[i][phase] += h;
+          sm[i][phase] -= h;
+          solver.assemble(sp, old, dt, rp, nullptr);
+          solver.assemble(sm, old, dt, rm, nullptr);
+          for (unsigned int row = 0; row < r0.size(); ++row)
+            {
+              const double fd = (rp(row) - rm(row)) / (2 * h);
+              const double an =
+                solver.sparsity.exists(row, col) ? solver.jacobian.el(row, col) : 0.;
+              if (fd != 0 && !solver.sparsity.exists(row, col))
+                std::cout << "FAILED: entry (" << row << ", " << col << ") missing from the pattern"
+                          << std::endl;
+              err  = std::max(err, std::abs(fd - an));
+              jmax = std::max(jmax, std::abs(an));
+            }
+        }
+    return err / jmax;
   }
 
   /// Drainage from the left (boundary 0: matrix s_nw = 0.5, fractures s_nw = 0.9, p_nw = 2e5)

@@ -53,10 +53,10 @@ namespace porofrac
      */
     template <int dim>
     double
-    distance_to_junction(const geometry::CutMesh<dim>  &mesh,
-                         const unsigned int             face,
-                         const FractureJunction<dim>   &j,
-                         const bool                     centroid = false);
+    distance_to_junction(const geometry::CutMesh<dim> &mesh,
+                         const unsigned int            face,
+                         const FractureJunction<dim>  &j,
+                         const bool                    centroid = false);
   } // namespace flow
 } // namespace porofrac
 

@@ -167,14 +167,15 @@ namespace porofrac
       unsigned int            n_intersections;
       /// Number of matrix connections whose centre lies on the wrong side of the face.
       unsigned int n_non_admissible;
-      /// Matrix-matrix connections with d_K,e + d_L,e < 1e-2 |sigma|: cocircular pairs (centres
-      /// merged, see merge_or_refuse) and, in 3D only, pairs with their centres in the wrong
-      /// order (unsigned distances, inexact). Boundary and interface faces with d_K,e <= 0 use
-      /// max(d_K,e, 1e-3 diameter).
+      /// Matrix-matrix connections with d_K,e + d_L,e < 1e-2 |sigma| (3D: 1e-2 sqrt|sigma|):
+      /// cocircular pairs (centres merged, see merge_or_refuse) and, in 3D only, pairs with their
+      /// centres in the wrong order (unsigned distances, inexact). Boundary and interface faces
+      /// with d_K,e <= 0 use max(d_K,e, 1e-3 diameter).
       unsigned int n_fallback;
-      /// 3D fracture connections whose circumcentre distance to the edge was not positive (or
-      /// whose pair of distances summed to less than 1e-2 |edge|): unsigned distances, at least
-      /// 5e-3 |edge| (pairs) or 1e-3 sqrt|sigma| (one-sided).
+      /// 3D fracture connections whose pair of circumcentre distances to the edge sums to less
+      /// than 1e-2 |edge| (cocircular pairs: at least 1e-5 |edge| in all; centres in the wrong
+      /// order: unsigned distances) or whose one-sided distance is not positive (1e-3
+      /// sqrt|sigma|).
       unsigned int n_non_admissible_fracture;
 
       /// Per-cell inputs: porosity and isotropic permeability (m^2) of matrix cells, aperture d_f
