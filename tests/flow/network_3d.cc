@@ -26,18 +26,18 @@ namespace
   bool
   network_checks()
   {
-    const auto mesh = flow_test::unit_cube(
-      "1: (0.2, 0.2, 0.5) (0.8, 0.2, 0.5) (0.8, 0.8, 0.5) (0.2, 0.8, 0.5); "
-      "2: (0.5, 0.3, 0.2) (0.5, 0.7, 0.2) (0.5, 0.7, 0.8) (0.5, 0.3, 0.8); "
-      "3: (0, 0.1, 0.1) (0.3, 0.1, 0.1) (0.3, 0.1, 0.4) (0, 0.1, 0.4)");
+    const auto mesh =
+      flow_test::unit_cube("1: (0.2, 0.2, 0.5) (0.8, 0.2, 0.5) (0.8, 0.8, 0.5) (0.2, 0.8, 0.5); "
+                           "2: (0.5, 0.3, 0.2) (0.5, 0.7, 0.2) (0.5, 0.7, 0.8) (0.5, 0.3, 0.8); "
+                           "3: (0, 0.1, 0.1) (0.3, 0.1, 0.1) (0.3, 0.1, 0.4) (0, 0.1, 0.4)");
     flow::TpfaGrid<3> grid(*mesh, false, {0, 1}, {0}, flow::TpfaGrid<3>::Centres::centroid);
     grid.porosity.assign(grid.n_matrix_cells, 0.2);
     grid.permeability.assign(grid.n_matrix_cells, 1e-12);
     grid.aperture.assign(grid.n_fracture_cells, 1e-3);
     grid.normal_transmissibility = 1e-10;
     grid.update_transmissibilities();
-    const auto              rocks = flow_test::corey_rocks();
-    flow::NewtonParameters  newton;
+    const auto             rocks = flow_test::corey_rocks();
+    flow::NewtonParameters newton;
     newton.entry_slope = false;
     flow::TwoPhaseSolver<3> solver(grid, rocks, newton);
     solver.matrix_dirichlet   = {{0, {{1.2e5, 1.25e5}}}, {1, {{1e5, 1.01e5}}}};
@@ -46,8 +46,7 @@ namespace
               << ", Dirichlet fracture nodes: ";
     unsigned int n_dirichlet_fracture = 0;
     for (const auto &node : grid.nodes)
-      n_dirichlet_fracture +=
-        node.kind == flow::TpfaGrid<3>::NodeKind::dirichlet_fracture ? 1 : 0;
+      n_dirichlet_fracture += node.kind == flow::TpfaGrid<3>::NodeKind::dirichlet_fracture ? 1 : 0;
     std::cout << (n_dirichlet_fracture > 0 ? "some" : "NONE") << std::endl;
 
     unsigned int seed = 4321;
@@ -77,7 +76,7 @@ namespace
     drainage.apply_dirichlet(drainage.state);
     drainage.begin_time_step();
     ConditionalOStream quiet(std::cout, false);
-    double             mass = 0;
+    double             mass      = 0;
     bool               converged = true;
     for (unsigned int step = 0; step < 3; ++step)
       {
