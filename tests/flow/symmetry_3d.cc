@@ -73,7 +73,7 @@ main()
       solver.begin_time_step();
     }
 
-  const auto   keys = centroid_keys(*mesh, grid);
+  const auto   keys      = centroid_keys(*mesh, grid);
   double       asymmetry = 0, scale = 0;
   unsigned int unmatched = 0;
   for (const auto &[k, i] : keys)
@@ -87,7 +87,8 @@ main()
       for (unsigned int phase = 0; phase < 2; ++phase)
         {
           asymmetry =
-            std::max(asymmetry, std::abs(solver.state[i][phase] - solver.state[mirror->second][phase]));
+            std::max(asymmetry,
+                     std::abs(solver.state[i][phase] - solver.state[mirror->second][phase]));
           scale = std::max(scale, std::abs(solver.state[i][phase]));
         }
     }
