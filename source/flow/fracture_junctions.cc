@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/flow/fracture_junctions.h>
+#include <porofrac/geometry/fracture_edges.h>
 
 #include <algorithm>
 #include <map>
@@ -74,15 +75,7 @@ namespace porofrac
           }
       else
         {
-          std::map<std::array<unsigned int, 2>, std::vector<unsigned int>> faces_of_edge;
-          for (const auto &f : mesh.fracture_faces)
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                std::array<unsigned int, 2> e = {{f.nodes[i], f.nodes[(i + 1) % 3]}};
-                std::sort(e.begin(), e.end());
-                faces_of_edge[e].push_back(f.index);
-              }
-          for (const auto &[e, faces] : faces_of_edge)
+          for (const auto &[e, faces] : geometry::faces_of_edges(mesh.fracture_faces))
             {
               FractureJunction<dim> j;
               j.ends     = e;

@@ -16,16 +16,17 @@ namespace porofrac
 
     namespace
     {
-      /// Boundary ids of @p dirichlet; for the matrix (@p on_mesh), each must be on the mesh.
-      template <int dim>
+      /// Boundary ids (keys) of @p conditions; for the matrix (@p on_mesh), each must be on the
+      /// mesh.
+      template <int dim, typename Conditions>
       std::set<types::boundary_id>
-      dirichlet_ids(const DirichletData          &dirichlet,
-                    const geometry::CutMesh<dim> &mesh,
-                    const bool                    on_mesh,
-                    const std::string            &parameter)
+      boundary_ids(const Conditions             &conditions,
+                   const geometry::CutMesh<dim> &mesh,
+                   const bool                    on_mesh,
+                   const std::string            &parameter)
       {
         std::set<types::boundary_id> ids;
-        for (const auto &b : dirichlet)
+        for (const auto &b : conditions)
           {
             check_input(!on_mesh || std::count(mesh.outer_boundary_ids.begin(),
                                                mesh.outer_boundary_ids.end(),
@@ -168,17 +169,12 @@ namespace porofrac
       FlowModel<dim> model;
       model.rocks = parameters.rocks;
       const auto matrix_ids =
-        dirichlet_ids(parameters.matrix_dirichlet, mesh, true, "Flow/Boundary conditions/Matrix");
-      {
-        DirichletData flux_ids;
-        for (const auto &q : parameters.matrix_flux)
-          flux_ids[q.first] = q.second.rate;
-        dirichlet_ids(flux_ids, mesh, true, "Flow/Boundary conditions/Matrix flux");
-      }
-      const auto fracture_ids = dirichlet_ids(parameters.fracture_dirichlet,
-                                              mesh,
-                                              false,
-                                              "Flow/Boundary conditions/Fracture");
+        boundary_ids(parameters.matrix_dirichlet, mesh, true, "Flow/Boundary conditions/Matrix");
+      boundary_ids(parameters.matrix_flux, mesh, true, "Flow/Boundary conditions/Matrix flux");
+      const auto fracture_ids = boundary_ids(parameters.fracture_dirichlet,
+                                             mesh,
+                                             false,
+                                             "Flow/Boundary conditions/Fracture");
       model.stepping          = parameters.stepping;
       model.newton            = parameters.newton;
       if (adjust_newton)

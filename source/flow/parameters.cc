@@ -7,7 +7,7 @@
 #include <porofrac/base/linear_solver.h>
 #include <porofrac/base/registry.h>
 #include <porofrac/flow/parameters.h>
-#include <porofrac/geometry/cut_mesh.h>
+#include <porofrac/geometry/boundary_entries.h>
 #include <porofrac/io/text.h>
 
 #include <algorithm>
@@ -481,36 +481,16 @@ namespace porofrac
         std::string                                                 names;
         for (const auto &a : allowed)
           names += (names.empty() ? "" : ", ") + a;
-        for (const std::string &entry : Utilities::split_string_list(text, ';'))
+        for (const auto &[id, rest] :
+             geometry::split_boundary_entries(text, parameter, "id: name = value, name = value"))
           {
-            if (entry.empty())
-              continue;
-            const auto colon = entry.find(':');
-            check_input(colon != std::string::npos,
-                        parameter,
-                        "expected 'id: name = value, name = value', got '" + entry + "'");
-            int id = -1;
-            try
-              {
-                id = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
-              }
-            catch (...)
-              {
-              }
-            check_input(id >= 0 && id < int(geometry::first_fracture_boundary_id),
-                        parameter,
-                        "bad boundary id in '" + entry + "'");
-            check_input(result.count(id) == 0,
-                        parameter,
-                        "boundary id " + std::to_string(id) + " is given twice");
             auto &values = result[id];
-            for (const std::string &item :
-                 Utilities::split_string_list(entry.substr(colon + 1), ','))
+            for (const std::string &item : Utilities::split_string_list(rest, ','))
               {
                 const auto eq = item.find('=');
                 check_input(eq != std::string::npos,
                             parameter,
-                            "expected 'name = value' in '" + entry + "'");
+                            "expected 'name = value' in '" + rest + "'");
                 const std::string key = Utilities::trim(item.substr(0, eq));
                 check_input(allowed.count(key) > 0,
                             parameter,

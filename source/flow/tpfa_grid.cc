@@ -91,6 +91,14 @@ namespace porofrac
                                                                 signed_resistance;
       }
 
+      /// Length scale of a face of measure @p measure: its length (2D), the root of its area (3D).
+      template <int dim>
+      double
+      face_length(const double measure)
+      {
+        return dim == 2 ? measure : std::sqrt(measure);
+      }
+
       template <int dim>
       double
       weight(const bool axisymmetric, const Point<dim> &x)
@@ -112,7 +120,7 @@ namespace porofrac
       // flux has T -> infinity. 2D: a distance of 1e-2 |sigma| keeps their pressures together;
       // 3D: the true distance, at least 1e-5 sqrt|sigma| (the six tetrahedra of a cube of a
       // structured mesh then act as one cell to 1e-5).
-      const double length = dim == 2 ? measure : std::sqrt(measure);
+      const double length = face_length<dim>(measure);
       if (d_a + d_b >= -1e-6 * length)
         {
           if (dim == 2)
@@ -211,7 +219,7 @@ namespace porofrac
                   if (K < L)
                     {
                       double d_a = d_K, d_b = half_distance(nodes[L].centre, centre, -normal);
-                      if (d_a + d_b < 1e-2 * (dim == 2 ? measure : std::sqrt(measure)))
+                      if (d_a + d_b < 1e-2 * face_length<dim>(measure))
                         {
                           ++n_fallback;
                           merge_or_refuse(d_a, d_b, measure, centre);

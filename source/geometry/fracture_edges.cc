@@ -12,6 +12,24 @@ namespace porofrac
   namespace geometry
   {
     template <int dim>
+    std::map<std::array<unsigned int, 2>, std::vector<unsigned int>>
+    faces_of_edges(const std::vector<FractureFace<dim>> &faces)
+    {
+      static_assert(dim == 3, "fracture triangles exist in 3D only");
+      std::map<std::array<unsigned int, 2>, std::vector<unsigned int>> result;
+      for (const auto &f : faces)
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            std::array<unsigned int, 2> e = {{f.nodes[i], f.nodes[(i + 1) % 3]}};
+            std::sort(e.begin(), e.end());
+            result[e].push_back(f.index);
+          }
+      return result;
+    }
+
+
+
+    template <int dim>
     std::vector<FractureEdge<dim>>
     find_fracture_edges(
       const std::vector<FractureFace<dim>>                              &faces,
@@ -21,15 +39,7 @@ namespace porofrac
       std::vector<FractureEdge<dim>> edges;
       if constexpr (dim == 3)
         {
-          std::map<std::array<unsigned int, 2>, std::vector<unsigned int>> faces_of_edge;
-          for (const auto &f : faces)
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                std::array<unsigned int, 2> e = {{f.nodes[i], f.nodes[(i + 1) % 3]}};
-                std::sort(e.begin(), e.end());
-                faces_of_edge[e].push_back(f.index);
-              }
-          for (const auto &[e, with] : faces_of_edge)
+          for (const auto &[e, with] : faces_of_edges(faces))
             {
               std::set<unsigned int> ids;
               for (const unsigned int f : with)
@@ -83,6 +93,8 @@ namespace porofrac
 
 
 
+    template std::map<std::array<unsigned int, 2>, std::vector<unsigned int>>
+    faces_of_edges<3>(const std::vector<FractureFace<3>> &);
     template std::vector<FractureEdge<2>>
     find_fracture_edges<2>(const std::vector<FractureFace<2>> &,
                            const std::vector<FractureNode<2>> &,

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/geometry/boundary_entries.h>
 #include <porofrac/geometry/gmsh_model.h>
 #include <porofrac/geometry/gmsh_session.h>
 #include <porofrac/geometry/mesh_generator.h>
@@ -181,54 +182,40 @@ namespace porofrac
 
 
 
+    /// Geometry/Boundary regions: each outer face whose centroid satisfies a region's condition,
+    /// and no earlier one's, gets the region's id.
     template <int dim>
     void
     apply_boundary_regions(const std::string &text, RawMesh<dim> &raw)
     {
-      const std::string parameter = "Geometry/Boundary regions";
-      for (const std::string &entry : Utilities::split_string_list(text, ';'))
+      const std::string               parameter = "Geometry/Boundary regions";
+      std::vector<bool>               taken(raw.boundary_faces.size(), false);
+      std::vector<types::boundary_id> ids(raw.boundary_faces.size());
+      for (const auto &[id, condition_text] :
+           split_boundary_entries(text, parameter, "id: condition"))
         {
-          if (entry.empty())
-            continue;
-          const auto colon = entry.find(':');
-          check_input(colon != std::string::npos,
-                      parameter,
-                      "expected 'id: condition', got '" + entry + "'");
-          int id = -1;
-          try
+          const auto   condition = io::parse_expressions<dim>({condition_text}, parameter);
+          unsigned int n_faces   = 0;
+          for (unsigned int f = 0; f < raw.boundary_faces.size(); ++f)
             {
-              id = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
-            }
-          catch (...)
-            {
-            }
-          check_input(id >= 0 && id < int(first_fracture_boundary_id),
-                      parameter,
-                      "bad boundary id in '" + entry + "' (0-999)");
-          const auto condition =
-            io::parse_expressions<dim>({Utilities::trim(entry.substr(colon + 1))}, parameter);
-          unsigned int n_faces = 0;
-          for (auto &face : raw.boundary_faces)
-            {
-              if (face.tag >= 1000000)
-                continue; // already taken by an earlier region
               Point<dim> centroid;
-              for (const unsigned int v : face.vertices)
+              for (const unsigned int v : raw.boundary_faces[f].vertices)
                 centroid += raw.vertices[v] / double(dim);
-              if (condition->value(centroid) != 0)
+              if (!taken[f] && condition->value(centroid) != 0)
                 {
-                  face.tag = 1000000 + id;
+                  taken[f] = true;
+                  ids[f]   = id;
                   ++n_faces;
                 }
             }
           check_input(n_faces > 0,
                       parameter,
                       "no outer boundary face has its centroid in region " + std::to_string(id) +
-                        " ('" + Utilities::trim(entry.substr(colon + 1)) + "')");
+                        " ('" + condition_text + "')");
         }
-      for (auto &face : raw.boundary_faces)
-        if (face.tag >= 1000000)
-          face.tag -= 1000000;
+      for (unsigned int f = 0; f < raw.boundary_faces.size(); ++f)
+        if (taken[f])
+          raw.boundary_faces[f].tag = ids[f];
     }
 
 

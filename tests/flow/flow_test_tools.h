@@ -73,12 +73,16 @@ namespace flow_test
     return rocks;
   }
 
-  inline void
-  set_data(flow::TpfaGrid<2> &grid)
+  /// Porosity 0.2, permeability @p permeability, aperture @p aperture, Lambda_f = 1e-10.
+  template <int dim>
+  void
+  set_data(flow::TpfaGrid<dim> &grid,
+           const double         aperture     = 1e-3,
+           const double         permeability = 1e-12)
   {
     grid.porosity.assign(grid.n_matrix_cells, 0.2);
-    grid.permeability.assign(grid.n_matrix_cells, 1e-12);
-    grid.aperture.assign(grid.n_fracture_cells, 1e-3);
+    grid.permeability.assign(grid.n_matrix_cells, permeability);
+    grid.aperture.assign(grid.n_fracture_cells, aperture);
     grid.normal_transmissibility = 1e-10;
     grid.update_transmissibilities();
   }

@@ -31,11 +31,7 @@ namespace
                            "2: (0.5, 0.3, 0.2) (0.5, 0.7, 0.2) (0.5, 0.7, 0.8) (0.5, 0.3, 0.8); "
                            "3: (0, 0.1, 0.1) (0.3, 0.1, 0.1) (0.3, 0.1, 0.4) (0, 0.1, 0.4)");
     flow::TpfaGrid<3> grid(*mesh, false, {0, 1}, {0}, flow::TpfaGrid<3>::Centres::centroid);
-    grid.porosity.assign(grid.n_matrix_cells, 0.2);
-    grid.permeability.assign(grid.n_matrix_cells, 1e-12);
-    grid.aperture.assign(grid.n_fracture_cells, 1e-3);
-    grid.normal_transmissibility = 1e-10;
-    grid.update_transmissibilities();
+    flow_test::set_data(grid);
     const auto             rocks = flow_test::corey_rocks();
     flow::NewtonParameters newton;
     newton.entry_slope = false;
@@ -102,11 +98,7 @@ namespace
     const auto mesh =
       flow_test::unit_cube("1: (0, 0, 0.5) (1, 0, 0.5) (1, 1, 0.5) (0, 1, 0.5)", 1, 1, "4, 4, 4");
     flow::TpfaGrid<3> grid(*mesh, false, {}, {0, 1});
-    grid.porosity.assign(grid.n_matrix_cells, 0.2);
-    grid.permeability.assign(grid.n_matrix_cells, 1e-24);
-    grid.aperture.assign(grid.n_fracture_cells, 1e-3);
-    grid.normal_transmissibility = 1e-10;
-    grid.update_transmissibilities();
+    flow_test::set_data(grid, 1e-3, 1e-24);
     flow::TwoPhaseSolver<3> solver(grid, flow_test::corey_rocks(), flow_test::tight_newton());
     solver.fracture_dirichlet = {{0, {{2e5, 2e5}}}, {1, {{1e5, 1e5}}}};
     for (auto &p : solver.state)

@@ -52,11 +52,7 @@ main()
     1,
     "6, 6, 6");
   flow::TpfaGrid<3> grid(*mesh, false, {4, 5}, {}, flow::TpfaGrid<3>::Centres::circumcentre);
-  grid.porosity.assign(grid.n_matrix_cells, 0.2);
-  grid.permeability.assign(grid.n_matrix_cells, 1e-12);
-  grid.aperture.assign(grid.n_fracture_cells, 1e-4);
-  grid.normal_transmissibility = 1e-10;
-  grid.update_transmissibilities();
+  flow_test::set_data(grid, 1e-4);
   const auto              rocks = flow_test::corey_rocks();
   flow::TwoPhaseSolver<3> solver(grid, rocks, flow::NewtonParameters());
   const double            pc_in = rocks[0].saturation->inverse(0.5, "test");

@@ -4,13 +4,21 @@
 
 #include <porofrac/geometry/cut_mesh.h>
 
+#include <array>
 #include <functional>
+#include <map>
 #include <vector>
 
 namespace porofrac
 {
   namespace geometry
   {
+    /// Every edge of the fracture triangles (3D), as its sorted pair of fracture-node indices,
+    /// with the faces that have it (in face order).
+    template <int dim>
+    std::map<std::array<unsigned int, 2>, std::vector<unsigned int>>
+    faces_of_edges(const std::vector<FractureFace<dim>> &faces);
+
     /**
      * The fracture edges (3D) of a fracture-face table: every edge of a fracture face except
      * those shared by exactly two faces of one fracture. An edge is a boundary edge when
