@@ -237,6 +237,9 @@ namespace porofrac
       private:
         void
         output(const unsigned int step, const double time);
+        /// The rows of fractures.csv at @p time: contact state, aperture and p_E per face.
+        void
+        write_fracture_rows(const double time);
         void
         save(io::CheckpointWriter &w) const;
         void
@@ -315,8 +318,7 @@ namespace porofrac
         fractures = &checkpoints.text_file("fractures.csv", header.str());
         if (!checkpoints.restarting())
           {
-            const double t = 0;
-            mechanics::write_fracture_table_rows(*fractures, mech, &flow.grid->aperture, &t);
+            write_fracture_rows(0.);
           }
         history = &checkpoints.text_file("history.csv", history_header);
         *history << std::setprecision(10);
@@ -365,7 +367,7 @@ namespace porofrac
                          << std::endl;
         const bool table = stepper.at_output_time() || stepper.finished();
         if (table)
-          mechanics::write_fracture_table_rows(*fractures, mech, &flow.grid->aperture, &t);
+          write_fracture_rows(t);
         const unsigned int every = flow.stepping.output_every;
         if ((every > 0 && step % every == 0) || table)
           output(step, t);
@@ -399,6 +401,17 @@ namespace porofrac
         write_fields(pm, context.path(name), context.output_format);
         pvd.add(time, name + "." + context.output_format);
         last_written = step;
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::write_fracture_rows(const double time)
+      {
+        const mechanics::CoupledFaceColumns columns{
+          flow.grid->aperture, pm.equivalent_pressure().data() + flow.grid->n_matrix_cells, time};
+        mechanics::write_fracture_table_rows(*fractures, mech, &columns);
       }
 
 

@@ -110,12 +110,12 @@ namespace porofrac
 
 
     void
-    write_fracture_table_header(std::ostream &out, const unsigned int dim, const bool with_time)
+    write_fracture_table_header(std::ostream &out, const unsigned int dim, const bool coupled)
     {
       out << "fracture_id,face_id,s,x,y," << (dim == 3 ? "z," : "") << "jump_n,jump_t,"
           << (dim == 3 ? "jump_t1,jump_t2," : "") << "lambda_n,lambda_t,"
           << (dim == 3 ? "lambda_t1,lambda_t2," : "") << "state,aperture"
-          << (with_time ? ",time" : "") << '\n';
+          << (coupled ? ",p_E,time" : "") << '\n';
     }
 
 
@@ -124,11 +124,9 @@ namespace porofrac
     void
     write_fracture_table_rows(std::ostream              &out,
                               const ContactProblem<dim> &problem,
-                              const std::vector<double> *aperture,
-                              const double              *time)
+                              const CoupledFaceColumns  *coupled)
     {
-      write_fracture_table_rows(
-        out, problem.get_mesh(), contact_face_values(problem), aperture, time);
+      write_fracture_table_rows(out, problem.get_mesh(), contact_face_values(problem), coupled);
     }
 
 
@@ -138,8 +136,7 @@ namespace porofrac
     write_fracture_table_rows(std::ostream                              &out,
                               const geometry::CutMesh<dim>              &mesh,
                               const std::vector<ContactFaceValues<dim>> &values,
-                              const std::vector<double>                 *aperture,
-                              const double                              *time)
+                              const CoupledFaceColumns                  *coupled)
     {
       using V              = ContactFaceValues<dim>;
       const auto precision = out.precision(10);
@@ -156,10 +153,12 @@ namespace porofrac
           out << v.lambda[0] << ',' << V::tangential(v.lambda) << ',';
           if (dim == 3)
             out << v.lambda[1] << ',' << v.lambda[dim - 1] << ',';
-          out << state_name(v.state) << ','
-              << (aperture ? (*aperture)[face.index] : std::max(0., -v.jump[0]));
-          if (time)
-            out << ',' << *time;
+          out << state_name(v.state) << ',';
+          if (coupled)
+            out << coupled->aperture[face.index] << ',' << coupled->p_E[face.index] << ','
+                << coupled->time;
+          else
+            out << std::max(0., -v.jump[0]);
           out << '\n';
         }
       out.precision(precision);
@@ -197,12 +196,10 @@ namespace porofrac
   template void write_fracture_table_rows(std::ostream &,                                                \
                                           const geometry::CutMesh<dim> &,                                \
                                           const std::vector<ContactFaceValues<dim>> &,                   \
-                                          const std::vector<double> *,                                   \
-                                          const double *);                                               \
+                                          const CoupledFaceColumns *);                                   \
   template void write_fracture_table_rows(std::ostream &,                                                \
                                           const ContactProblem<dim> &,                                   \
-                                          const std::vector<double> *,                                   \
-                                          const double *);                                               \
+                                          const CoupledFaceColumns *);                                   \
   template void write_displacement(const ContactProblem<dim> &,                                          \
                                    const std::string &,                                                  \
                                    const std::string &);

@@ -79,20 +79,29 @@ namespace porofrac
 
     /**
      * Header of fractures.csv: fracture_id, face_id, s, x, y[, z], jump_n, jump_t[, jump_t1,
-     * jump_t2], lambda_n, lambda_t[, lambda_t1, lambda_t2], state, aperture[, time] (3D adds
-     * z and the tangential components; @p with_time adds the time column).
+     * jump_t2], lambda_n, lambda_t[, lambda_t1, lambda_t2], state, aperture[, p_E, time] (3D
+     * adds z and the tangential components; @p coupled adds the fracture's equivalent pressure
+     * and the time).
      */
     void
-    write_fracture_table_header(std::ostream &out, const unsigned int dim, const bool with_time);
+    write_fracture_table_header(std::ostream &out, const unsigned int dim, const bool coupled);
 
-    /// One row per fracture face (see the header). The aperture is @p aperture[f] when given,
-    /// else max(0, -[u]_n) (the opening).
+    /// The flow columns of a coupled fracture table: per fracture face f, the aperture and the
+    /// equivalent pressure p_E (11d) of the fracture cell f, and the time.
+    struct CoupledFaceColumns
+    {
+      const std::vector<double> &aperture;
+      const double              *p_E;
+      double                     time;
+    };
+
+    /// One row per fracture face (see the header). Without @p coupled the aperture is
+    /// max(0, -[u]_n) (the opening).
     template <int dim>
     void
     write_fracture_table_rows(std::ostream              &out,
                               const ContactProblem<dim> &problem,
-                              const std::vector<double> *aperture = nullptr,
-                              const double              *time     = nullptr);
+                              const CoupledFaceColumns  *coupled = nullptr);
 
     /// The same from the values of every face of @p mesh.
     template <int dim>
@@ -100,8 +109,7 @@ namespace porofrac
     write_fracture_table_rows(std::ostream                              &out,
                               const geometry::CutMesh<dim>              &mesh,
                               const std::vector<ContactFaceValues<dim>> &values,
-                              const std::vector<double>                 *aperture = nullptr,
-                              const double                              *time     = nullptr);
+                              const CoupledFaceColumns                  *coupled = nullptr);
 
     /// Writes the P2 displacement (patches of degree 2) to @p filename in @p format (vtu, vtk).
     template <int dim>
