@@ -212,7 +212,8 @@ namespace porofrac
                           "10",
                           Patterns::Integer(0),
                           "Newton: give up (and cut the time step) after this many iterations in "
-                          "which neither the residual nor the mass defect halved (0: never).");
+                          "which neither the residual nor the mass defect halved and the "
+                          "capillary chop limited no update (0: never).");
         prm.declare_entry("Saturation chop",
                           "0",
                           Patterns::Double(0),

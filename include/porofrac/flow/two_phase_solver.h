@@ -267,6 +267,9 @@ namespace porofrac
       unsigned int n_free;
       double
       total_pore_volume() const;
+      /// The capillary chop of node @p i: the largest change of its p_c per iteration (0: none).
+      double
+      capillary_chop_limit(const unsigned int i) const;
       /// The change @p dpc of node @p i's capillary pressure that Newton proposes, limited by the
       /// capillary chop, the kink stop, the entry slope, the capillary bound and the saturation
       /// chop (NewtonParameters).
@@ -284,8 +287,11 @@ namespace porofrac
                           std::string          &failure);
       /// Applies the Newton update (capillary and saturation chops, the dominant phase's
       /// pressure kept); returns the relative update max |dp| / max |p|.
+      /// @p n_capillary_chopped: the number of nodes whose p_c update the capillary chop limited.
       double
-      apply_update(const Vector<double> &update, ConditionalOStream &verbose);
+      apply_update(const Vector<double> &update,
+                   ConditionalOStream   &verbose,
+                   unsigned int         &n_capillary_chopped);
       /// Backtracking from @p previous along the applied update while |R| > @p r; whether a
       /// step lowered |R|.
       bool
