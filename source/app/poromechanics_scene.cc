@@ -150,11 +150,20 @@ namespace porofrac
         m["nonlinear_iterations"]     = totals.mechanics;
         m["initial_state_iterations"] = initial_iterations;
         // LU factorizations of the contact system (reused while no face row changes).
-        m["lu_factorizations"] = pm.mechanics.n_factorizations();
-        m["converged"]         = true;
-        m["n_open"]            = c[0];
-        m["n_stick"]           = c[1];
-        m["n_slip"]            = c[2];
+        const auto &linear = pm.contact_linear_totals();
+        m["lu_factorizations"] =
+          pm.distributed_contact() ? linear[0] : pm.mechanics.n_factorizations();
+        if (pm.distributed_contact())
+          {
+            m["distributed"]             = true;
+            m["linear_solver"]           = pm.contact_linear_solver();
+            m["linear_iterations"]       = linear[1];
+            m["linear_direct_fallbacks"] = linear[2];
+          }
+        m["converged"] = true;
+        m["n_open"]    = c[0];
+        m["n_stick"]   = c[1];
+        m["n_slip"]    = c[2];
         return m;
       }
 
@@ -214,10 +223,11 @@ namespace porofrac
       class CoupledRun
       {
       public:
-        CoupledRun(const PhysicsParameters         &parameters,
-                   const geometry::CutMesh<dim>    &mesh,
-                   io::RunContext                  &context,
-                   const std::vector<unsigned int> &cell_owner);
+        CoupledRun(const PhysicsParameters                 &parameters,
+                   const geometry::CutMesh<dim>            &mesh,
+                   io::RunContext                          &context,
+                   const std::vector<unsigned int>         &cell_owner,
+                   const geometry::DistributedCutMesh<dim> *distributed_mesh);
 
         /// The state at t = 0 (or the restored one) written, the text files open.
         void
@@ -245,28 +255,31 @@ namespace porofrac
         void
         load(io::CheckpointReader &r);
 
-        io::RunContext                                &context;
-        const coupling::CouplingParameters             parameters;
-        flow::FlowModel<dim>                           flow;
-        mechanics::ContactProblem<dim>                 mech;
-        coupling::Poromechanics<dim>                   pm;
-        unsigned int                                   initial_mechanics_iterations = 0;
-        std::unique_ptr<coupling::EnergyEstimate<dim>> energy;
-        coupling::CoupledStepReport                    step_report;
-        RunTotals                                      totals;
-        io::PvdWriter                                  pvd;
-        int                                            last_written = -1; // field files' step
-        Checkpointing                                  checkpoints;
-        std::ofstream                                 *fractures = nullptr, *history = nullptr;
+        io::RunContext                    &context;
+        const coupling::CouplingParameters parameters;
+        flow::FlowModel<dim>               flow;
+        mechanics::ContactProblem<dim>     mech;
+        /// The contact problem's solver in distributed-contact runs (the state is copied to mech).
+        std::unique_ptr<mechanics::DistributedContactProblem<dim>> distributed_mech;
+        coupling::Poromechanics<dim>                               pm;
+        unsigned int                                               initial_mechanics_iterations = 0;
+        std::unique_ptr<coupling::EnergyEstimate<dim>>             energy;
+        coupling::CoupledStepReport                                step_report;
+        RunTotals                                                  totals;
+        io::PvdWriter                                              pvd;
+        int            last_written = -1; // field files' step
+        Checkpointing  checkpoints;
+        std::ofstream *fractures = nullptr, *history = nullptr;
       };
 
 
 
       template <int dim>
-      CoupledRun<dim>::CoupledRun(const PhysicsParameters         &physics,
-                                  const geometry::CutMesh<dim>    &mesh,
-                                  io::RunContext                  &context,
-                                  const std::vector<unsigned int> &cell_owner)
+      CoupledRun<dim>::CoupledRun(const PhysicsParameters                 &physics,
+                                  const geometry::CutMesh<dim>            &mesh,
+                                  io::RunContext                          &context,
+                                  const std::vector<unsigned int>         &cell_owner,
+                                  const geometry::DistributedCutMesh<dim> *distributed_mesh)
           : stepper(physics.flow.stepping.final_time,
                     physics.flow.stepping.initial_step,
                     physics.flow.stepping.maximum_step,
@@ -277,16 +290,31 @@ namespace porofrac
           , parameters(physics.coupling)
           , flow(make_inner_flow_model(physics, mesh))
           , mech(mesh, physics.mechanics, context.verbose, context.timer)
-          , pm(mech, flow, parameters, context.verbose, context.timer, context.communicator)
+          , distributed_mech(
+              distributed_mesh ?
+                std::make_unique<mechanics::DistributedContactProblem<dim>>(*distributed_mesh,
+                                                                            physics.mechanics,
+                                                                            context.verbose,
+                                                                            context.timer) :
+                nullptr)
+          , pm(mech,
+               flow,
+               parameters,
+               context.verbose,
+               context.timer,
+               context.communicator,
+               distributed_mech.get())
           , pvd(context.path("poromechanics.pvd"))
           , checkpoints(context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"})
       {
         // Distributed: the flow's Newton systems are shared, the contact problem is solved by
-        // every process (coupling::Poromechanics).
+        // every process or distributed (coupling::Poromechanics).
         if (context.communicator != MPI_COMM_SELF)
           flow.solver->distribute(context.communicator, flow.grid->node_owners(cell_owner));
         context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
         mech.setup();
+        if (distributed_mech)
+          distributed_mech->setup();
         context.summary["n_dofs_mechanics"] = mech.n_dofs();
         context.summary["n_unknowns_flow"]  = flow.solver->n_unknowns();
         context.report << "Coupling: " << mech.n_dofs() << " mechanics dofs, "
@@ -295,7 +323,7 @@ namespace porofrac
                        << flow.grid->n_fracture_cells << " fracture cells" << std::endl;
         context.progress << "*** Poromechanics: initial state" << std::endl;
         pm.initialize();
-        initial_mechanics_iterations = mech.statistics().iterations;
+        initial_mechanics_iterations = pm.contact_statistics().iterations;
         energy                       = std::make_unique<coupling::EnergyEstimate<dim>>(pm);
         report_states(context.report, mech, "t = 0");
         context.report << "Coupling: t = 0, mean fracture width " << std::scientific
@@ -488,12 +516,13 @@ namespace porofrac
 
     template <int dim>
     void
-    run_poromechanics_scene(const PhysicsParameters         &parameters,
-                            const geometry::CutMesh<dim>    &mesh,
-                            io::RunContext                  &context,
-                            const std::vector<unsigned int> &cell_owner)
+    run_poromechanics_scene(const PhysicsParameters                 &parameters,
+                            const geometry::CutMesh<dim>            &mesh,
+                            io::RunContext                          &context,
+                            const std::vector<unsigned int>         &cell_owner,
+                            const geometry::DistributedCutMesh<dim> *distributed_mesh)
     {
-      CoupledRun<dim> run(parameters, mesh, context, cell_owner);
+      CoupledRun<dim> run(parameters, mesh, context, cell_owner, distributed_mesh);
       run.start();
       run_time_loop(
         run.stepper,
@@ -510,11 +539,13 @@ namespace porofrac
     run_poromechanics_scene(const PhysicsParameters &,
                             const geometry::CutMesh<2> &,
                             io::RunContext &,
-                            const std::vector<unsigned int> &);
+                            const std::vector<unsigned int> &,
+                            const geometry::DistributedCutMesh<2> *);
     template void
     run_poromechanics_scene(const PhysicsParameters &,
                             const geometry::CutMesh<3> &,
                             io::RunContext &,
-                            const std::vector<unsigned int> &);
+                            const std::vector<unsigned int> &,
+                            const geometry::DistributedCutMesh<3> *);
   } // namespace app
 } // namespace porofrac

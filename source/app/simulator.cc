@@ -192,16 +192,26 @@ namespace porofrac
           run_contact_mechanics_scene(physics_parameters, *mesh, context);
         else if (physics == "two-phase flow" || physics == "poromechanics")
           {
-            std::vector<unsigned int> cell_owner;
+            std::vector<unsigned int>                          cell_owner;
+            std::unique_ptr<geometry::DistributedCutMesh<dim>> distributed;
             if (context.communicator != MPI_COMM_SELF)
               {
                 TimerOutput::Scope t(context.timer, "Geometry: partition and distribution");
-                cell_owner = geometry::partition_cells(*mesh, context.communicator);
+                if (physics == "poromechanics" && physics_parameters.coupling.distributed_contact)
+                  {
+                    distributed =
+                      std::make_unique<geometry::DistributedCutMesh<dim>>(*mesh,
+                                                                          context.communicator);
+                    cell_owner = distributed->cell_owners();
+                  }
+                else
+                  cell_owner = geometry::partition_cells(*mesh, context.communicator);
               }
             if (physics == "two-phase flow")
               run_two_phase_flow_scene(physics_parameters, *mesh, context, cell_owner);
             else
-              run_poromechanics_scene(physics_parameters, *mesh, context, cell_owner);
+              run_poromechanics_scene(
+                physics_parameters, *mesh, context, cell_owner, distributed.get());
           }
       }
     } // namespace

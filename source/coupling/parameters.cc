@@ -101,6 +101,15 @@ namespace porofrac
                         "Start the fixed point of a time step from x_n + (dt_n/dt_{n-1}) (x_n - "
                         "x_{n-1}) (x = p_E or the displacement measures), the linear "
                         "extrapolation of the last two accepted steps; false: from x_n.");
+      prm.declare_entry(
+        "Distributed contact mechanics",
+        "false",
+        Patterns::Bool(),
+        "Distributed runs (more than one MPI process, or Distributed = always): true solves the "
+        "contact problem with the distributed code (partitioned matrices, Mechanics/Distributed "
+        "linear solver: MUMPS or AMG-preconditioned GMRES; doc/parallel.md) and copies its "
+        "solution to every process after each solve; false: every process solves the serial "
+        "contact problem (Mechanics/Linear solver). Serial runs ignore it.");
       prm.leave_subsection();
     }
 
@@ -128,6 +137,7 @@ namespace porofrac
       inner_flow_update_tolerance       = prm.get_double(c, "Inner flow update tolerance");
       kozeny_carman                     = prm.get_bool(c, "Kozeny-Carman");
       extrapolate_initial_guess         = prm.get_bool(c, "Extrapolate initial guess");
+      distributed_contact               = prm.get_bool(c, "Distributed contact mechanics");
       output_times.clear();
       for (const std::string &s :
            Utilities::split_string_list(prm.get(c, "Fracture output times"), ','))

@@ -6,6 +6,7 @@
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/io/text.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace porofrac
@@ -13,18 +14,20 @@ namespace porofrac
   namespace coupling
   {
     template <int dim>
-    Poromechanics<dim>::Poromechanics(mechanics::ContactProblem<dim> &mechanics,
-                                      flow::FlowModel<dim>           &flow,
-                                      const CouplingParameters       &parameters,
-                                      ConditionalOStream             &verbose,
-                                      TimerOutput                    &timer,
-                                      const MPI_Comm                  communicator)
+    Poromechanics<dim>::Poromechanics(mechanics::ContactProblem<dim>            &mechanics,
+                                      flow::FlowModel<dim>                      &flow,
+                                      const CouplingParameters                  &parameters,
+                                      ConditionalOStream                        &verbose,
+                                      TimerOutput                               &timer,
+                                      const MPI_Comm                             communicator,
+                                      mechanics::DistributedContactProblem<dim> *distributed)
         : mechanics(mechanics)
         , flow(flow)
         , parameters(parameters)
         , verbose(verbose)
         , timer(timer)
         , communicator(communicator)
+        , distributed(distributed)
         , n_matrix(flow.grid->n_matrix_cells)
         , n_fracture(flow.grid->n_fracture_cells)
     {
@@ -73,16 +76,45 @@ namespace porofrac
     void
     Poromechanics<dim>::solve_mechanics(const Vector<double> &x)
     {
-      TimerOutput::Scope t(timer, "Coupling: contact mechanics");
+      TimerOutput::Scope        t(timer, "Coupling: contact mechanics");
+      const std::vector<double> p_matrix(x.begin(), x.begin() + n_matrix);
+      const std::vector<double> p_fracture(x.begin() + n_matrix, x.end());
+      const auto                count = [&](const mechanics::ContactStatistics &s) {
+        report.mechanics_iterations += s.iterations;
+        report.mechanics_factorizations += s.factorizations;
+        report.mechanics_linear_iterations += s.linear_iterations;
+        report.mechanics_direct_fallbacks += s.direct_fallbacks;
+        linear_totals[0] += s.factorizations;
+        linear_totals[1] += s.linear_iterations;
+        linear_totals[2] += s.direct_fallbacks;
+      };
+      if (distributed)
+        {
+          // Collective; a contact failure is thrown on every process.
+          distributed->set_equivalent_pressures(p_matrix, p_fracture, parameters.biot_coefficient);
+          count(distributed->solve(/*warm_start=*/true));
+          Vector<double> u, lambda;
+          distributed->replicate_state(mechanics.get_dof_handler(), u, lambda);
+          mechanics.set_state(u, lambda);
+          return;
+        }
       // A contact failure on one process is thrown on all of them.
       collectively(communicator, [&]() {
-        mechanics.set_equivalent_pressures(std::vector<double>(x.begin(), x.begin() + n_matrix),
-                                           std::vector<double>(x.begin() + n_matrix, x.end()),
-                                           parameters.biot_coefficient);
+        mechanics.set_equivalent_pressures(p_matrix, p_fracture, parameters.biot_coefficient);
         // Warm start from the previous solve (paper 5.3: the previous time step's solution).
-        const auto &statistics = mechanics.solve(/*warm_start=*/true);
-        report.mechanics_iterations += statistics.iterations;
+        count(mechanics.solve(/*warm_start=*/true));
       });
+    }
+
+
+
+    template <int dim>
+    void
+    Poromechanics<dim>::set_mechanics_state(const Vector<double> &u, const Vector<double> &lambda)
+    {
+      mechanics.set_state(u, lambda);
+      if (distributed)
+        distributed->set_state(mechanics.get_dof_handler(), u, lambda);
     }
 
 
@@ -353,6 +385,8 @@ namespace porofrac
       c.put("porosity", grid.porosity);
       c.put("permeability", grid.permeability);
       c.put("aperture", grid.aperture);
+      c.put("contact linear solves",
+            std::vector<double>(linear_totals.begin(), linear_totals.end()));
     }
 
 
@@ -381,8 +415,12 @@ namespace porofrac
       c.get("porosity", grid.porosity);
       c.get("permeability", grid.permeability);
       c.get("aperture", grid.aperture);
+      std::vector<double> totals;
+      c.get("contact linear solves", totals);
+      check_input(totals.size() == linear_totals.size(), "--restart", "malformed checkpoint");
+      std::copy(totals.begin(), totals.end(), linear_totals.begin());
       grid.update_transmissibilities();
-      mechanics.set_state(u_old, lambda_old);
+      set_mechanics_state(u_old, lambda_old);
     }
 
 
@@ -392,7 +430,7 @@ namespace porofrac
     Poromechanics<dim>::restore_accepted_state()
     {
       flow.solver->state = flow.solver->old_state;
-      mechanics.set_state(u_old, lambda_old);
+      set_mechanics_state(u_old, lambda_old);
       p_E = p_E_old;
     }
 

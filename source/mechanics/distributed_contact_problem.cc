@@ -37,15 +37,78 @@ namespace porofrac
       friction_field.initialize(system.get_mesh(), prm);
       system.initial_displacement(u);
       system.reinit_multipliers(lambda);
+      solved_once = false;
     }
 
 
 
     template <int dim>
     const ContactStatistics &
-    DistributedContactProblem<dim>::solve()
+    DistributedContactProblem<dim>::solve(const bool warm_start)
     {
-      return solver.solve(u, lambda, true);
+      const bool cold = !(warm_start && solved_once);
+      solved_once     = true;
+      return solver.solve(u, lambda, cold);
+    }
+
+
+
+    template <int dim>
+    void
+    DistributedContactProblem<dim>::replicate_state(const DoFHandler<dim> &serial_dofs,
+                                                    Vector<double>        &displacement,
+                                                    Vector<double>        &multipliers) const
+    {
+      const MPI_Comm comm = system.get_communicator();
+      const bool     root = system.get_distributed_mesh().this_rank() == 0;
+      displacement        = gather_displacement(root ? &serial_dofs : nullptr);
+      multipliers         = gather_multipliers();
+      if (!root)
+        {
+          displacement.reinit(serial_dofs.n_dofs());
+          multipliers.reinit(dim * system.n_faces());
+        }
+      for (Vector<double> *v : {&displacement, &multipliers})
+        {
+          const int ierr = MPI_Bcast(v->begin(), v->size(), MPI_DOUBLE, 0, comm);
+          AssertThrowMPI(ierr);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    DistributedContactProblem<dim>::set_state(const DoFHandler<dim> &serial_dofs,
+                                              const Vector<double>  &displacement,
+                                              const Vector<double>  &multipliers)
+    {
+      AssertDimension(displacement.size(), serial_dofs.n_dofs());
+      AssertDimension(multipliers.size(), dim * system.n_faces());
+      // Every owned dof lies on an owned cell; a cell's local dof order is the same in both
+      // DoFHandlers (gather_displacement).
+      const auto &mesh = system.get_distributed_mesh();
+      std::vector<typename DoFHandler<dim>::active_cell_iterator> serial_cells(
+        serial_dofs.get_triangulation().n_active_cells());
+      for (const auto &cell : serial_dofs.active_cell_iterators())
+        serial_cells[cell->active_cell_index()] = cell;
+      const unsigned int                   n = system.get_fe().n_dofs_per_cell();
+      Vector<double>                       local(n);
+      std::vector<types::global_dof_index> indices(n);
+      for (const auto &cell : system.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            serial_cells[mesh.serial_cell(cell)->active_cell_index()]->get_dof_values(displacement,
+                                                                                      local);
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < n; ++i)
+              if (system.owned_displacements().is_element(indices[i]))
+                u(indices[i]) = local[i];
+          }
+      for (const auto i : system.owned_multipliers())
+        lambda(i) = multipliers(i);
+      u.compress(VectorOperation::insert);
+      lambda.compress(VectorOperation::insert);
     }
 
 

@@ -223,6 +223,7 @@ namespace porofrac
       const DeckLoads<dim> loads(prm, mesh.serial);
       CellScratch<dim>     scratch(mesh.mapping(), fe);
       f.reinit(owned_u, comm);
+      divergence.clear();
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -232,6 +233,11 @@ namespace porofrac
             cell->get_dof_indices(scratch.local);
             K_full.add(scratch.local, scratch.matrix);
             f.add(scratch.local, scratch.rhs);
+            CellDivergence d{mesh.serial_cell(cell)->active_cell_index(), {}};
+            for (unsigned int i = 0; i < scratch.local.size(); ++i)
+              if (scratch.div_integral(i) != 0)
+                d.entries.emplace_back(scratch.local[i], scratch.div_integral(i));
+            divergence.push_back(std::move(d));
             constraints_hom.distribute_local_to_global(scratch.matrix,
                                                        scratch.local,
                                                        K_constrained);
@@ -255,6 +261,45 @@ namespace porofrac
       check_input(std::isfinite(f.l2_norm()),
                   "Mechanics",
                   "the loads (body force, tractions, pressures, pre-stress) are not finite");
+      f_fixed = f;
+    }
+
+
+
+    template <int dim>
+    void
+    DistributedElasticitySystem<dim>::set_equivalent_pressures(
+      const std::vector<double> &p_E_matrix,
+      const std::vector<double> &p_E_fracture,
+      const double               biot)
+    {
+      AssertDimension(p_E_matrix.size(), mesh.serial.triangulation.n_active_cells());
+      AssertDimension(p_E_fracture.size(), n_faces());
+      // Eq. (11b) moved to the right-hand side: + int b p_E,m div v - int p_E,f [v]_n, the
+      // second as B^T of the multiplier-row vector p_E,f n+ (B rows: int [v]_i).
+      const MPI_Comm comm = get_communicator();
+      f                   = f_fixed;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  values;
+      for (const CellDivergence &d : divergence)
+        {
+          dofs.clear();
+          values.clear();
+          for (const auto &[dof, value] : d.entries)
+            {
+              dofs.push_back(dof);
+              values.push_back(biot * p_E_matrix[d.cell] * value);
+            }
+          f.add(dofs, values);
+        }
+      f.compress(VectorOperation::add);
+      VectorType face_load(owned_lambda, comm), load(owned_u, comm);
+      for (const unsigned int fi : mesh.locally_owned_faces())
+        for (unsigned int c = 0; c < dim; ++c)
+          face_load(dim * fi + c) = p_E_fracture[fi] * mesh.serial.fracture_faces[fi].normal[c];
+      face_load.compress(VectorOperation::insert);
+      coupling.Tvmult(load, face_load);
+      f -= load;
     }
 
 

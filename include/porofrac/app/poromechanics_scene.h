@@ -4,6 +4,7 @@
 
 #include <porofrac/app/postprocess/postprocessor.h>
 #include <porofrac/geometry/cut_mesh.h>
+#include <porofrac/geometry/distributed_cut_mesh.h>
 #include <porofrac/io/run_context.h>
 
 #include <vector>
@@ -21,15 +22,17 @@ namespace porofrac
      *
      * On the processes of a distributed context (context.communicator), @p cell_owner gives
      * the process of every cell: the flow's Newton systems are distributed as in a two-phase
-     * flow scene, every process solves the same serial contact problem, and rank 0 writes the
-     * files (doc/parallel.md).
+     * flow scene, every process solves the same serial contact problem (or, given
+     * @p distributed_mesh, the contact problem is distributed over its partition, which must be
+     * @p cell_owner), and rank 0 writes the files (doc/parallel.md).
      */
     template <int dim>
     void
-    run_poromechanics_scene(const PhysicsParameters         &parameters,
-                            const geometry::CutMesh<dim>    &mesh,
-                            io::RunContext                  &context,
-                            const std::vector<unsigned int> &cell_owner = {});
+    run_poromechanics_scene(const PhysicsParameters                 &parameters,
+                            const geometry::CutMesh<dim>            &mesh,
+                            io::RunContext                          &context,
+                            const std::vector<unsigned int>         &cell_owner       = {},
+                            const geometry::DistributedCutMesh<dim> *distributed_mesh = nullptr);
   } // namespace app
 } // namespace porofrac
 

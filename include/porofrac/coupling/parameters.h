@@ -39,7 +39,10 @@ namespace porofrac
       bool kozeny_carman = true;
       /// Start each step's fixed point from the linear extrapolation in time of the last two
       /// accepted states instead of the last one.
-      bool                 extrapolate_initial_guess = false;
+      bool extrapolate_initial_guess = false;
+      /// Distributed runs: solve the contact problem with the distributed code
+      /// (mechanics::DistributedContactProblem) instead of the serial code on every process.
+      bool                 distributed_contact = false;
       FixedPointParameters fixed_point;
       /// Times (s, sorted) at which fractures.csv rows and fields are written; the time steps
       /// land on them.

@@ -14,6 +14,7 @@
 #include <porofrac/flow/model.h>
 #include <porofrac/io/checkpoint.h>
 #include <porofrac/mechanics/contact_problem.h>
+#include <porofrac/mechanics/distributed_contact_problem.h>
 
 #include <array>
 #include <memory>
@@ -35,7 +36,11 @@ namespace porofrac
       unsigned int gmres_iterations       = 0;
       unsigned int flow_newton_iterations = 0; ///< summed over all flow solves of the step
       unsigned int mechanics_iterations   = 0; ///< summed over all contact solves of the step
-      double       relative_residual      = 0;
+      /// Linear solves of the contact iterations, summed over the step: factorizations, Krylov
+      /// iterations and Krylov solves replaced by a direct one.
+      unsigned int mechanics_factorizations = 0, mechanics_linear_iterations = 0,
+                   mechanics_direct_fallbacks = 0;
+      double                relative_residual = 0;
       std::array<double, 2> mass_defect{{0., 0.}};
       std::string           failure; ///< why the step failed, empty when converged
     };
@@ -54,17 +59,23 @@ namespace porofrac
      * (div u per cell, [u]_n per face) are rank 0's, so that the replicated flow state and the
      * fixed-point vectors stay the same on every process even if their linear algebra differed
      * in round-off.
+     *
+     * With @p distributed_mechanics, the contact problem is solved by that distributed problem
+     * instead (Coupling/Distributed contact mechanics), and its (u, lambda) is copied into
+     * @p mechanics on every process after each solve: everything the coupling reads (divergences,
+     * jumps, energies, output) comes from the serial problem as before.
      */
     template <int dim>
     class Poromechanics
     {
     public:
-      Poromechanics(mechanics::ContactProblem<dim> &mechanics,
-                    flow::FlowModel<dim>           &flow,
-                    const CouplingParameters       &parameters,
-                    ConditionalOStream             &verbose,
-                    TimerOutput                    &timer,
-                    const MPI_Comm                  communicator = MPI_COMM_SELF);
+      Poromechanics(mechanics::ContactProblem<dim>            &mechanics,
+                    flow::FlowModel<dim>                      &flow,
+                    const CouplingParameters                  &parameters,
+                    ConditionalOStream                        &verbose,
+                    TimerOutput                               &timer,
+                    const MPI_Comm                             communicator = MPI_COMM_SELF,
+                    mechanics::DistributedContactProblem<dim> *distributed_mechanics = nullptr);
 
       /// t = 0: p_E^0 of the initial pressures, (u^0, lambda^0) the contact solution with p_E^0
       /// (paper, after (11d)), phi = phi_0, d_f = d_0 - [u^0]_n.
@@ -129,6 +140,32 @@ namespace porofrac
         return p_E;
       }
 
+      /// The statistics of the last contact solve (of the distributed problem if there is one).
+      const mechanics::ContactStatistics &
+      contact_statistics() const
+      {
+        return distributed ? distributed->statistics() : mechanics.statistics();
+      }
+      /// Over every contact solve so far (the initial one included): factorizations, Krylov
+      /// iterations, Krylov solves replaced by a direct one.
+      const std::array<unsigned int, 3> &
+      contact_linear_totals() const
+      {
+        return linear_totals;
+      }
+      /// Whether the contact problem is solved by the distributed code.
+      bool
+      distributed_contact() const
+      {
+        return distributed != nullptr;
+      }
+      /// The linear solver of the contact iterations.
+      std::string
+      contact_linear_solver() const
+      {
+        return distributed ? distributed->linear_solver_name() : mechanics.linear_solver_name();
+      }
+
       mechanics::ContactProblem<dim> &mechanics;
       flow::FlowModel<dim>           &flow;
 
@@ -142,6 +179,9 @@ namespace porofrac
 
       void
       solve_mechanics(const Vector<double> &p_E_all);
+      /// Sets (u, lambda) of the contact problem(s).
+      void
+      set_mechanics_state(const Vector<double> &u, const Vector<double> &lambda);
       /// (div u per cell, [u]_n per face) of the current mechanics solution (rank 0's; collective).
       Vector<double>
       displacement_measures() const;
@@ -156,11 +196,13 @@ namespace porofrac
 
       const CouplingParameters parameters;
       /// The flow's matrix pore volumes: the Biot storage of (11d) (set by initialize()).
-      std::shared_ptr<BiotStorage<dim>> storage;
-      ConditionalOStream               &verbose;
-      TimerOutput                      &timer;
-      const MPI_Comm                    communicator;
-      const unsigned int                n_matrix, n_fracture;
+      std::shared_ptr<BiotStorage<dim>>                storage;
+      ConditionalOStream                              &verbose;
+      TimerOutput                                     &timer;
+      const MPI_Comm                                   communicator;
+      mechanics::DistributedContactProblem<dim> *const distributed;
+      std::array<unsigned int, 3>                      linear_totals{{0, 0, 0}};
+      const unsigned int                               n_matrix, n_fracture;
 
       double         dt = 0;
       Vector<double> p_E;     ///< current (matrix cells, then fracture faces)

@@ -78,6 +78,12 @@ namespace porofrac
       {
         return owner[serial_index];
       }
+      /// The owning rank of every serial active cell.
+      const std::vector<unsigned int> &
+      cell_owners() const
+      {
+        return owner;
+      }
       /// Rank owning fracture face @p f (the owner of its plus-side cell).
       types::subdomain_id
       face_owner(const unsigned int f) const

@@ -44,10 +44,34 @@ namespace porofrac
       void
       setup();
 
-      /// Solves from the deck's initial guess (ContactSolver::solve). Collective; throws
+      /// Solves (ContactSolver::solve) from the current (u, lambda) if @p warm_start and a
+      /// previous solve exists, else from the deck's initial guess. Collective; throws
       /// SolverFailure on every process.
       const ContactStatistics &
-      solve();
+      solve(const bool warm_start = false);
+
+      /// Poromechanical loads of eq. (11b) (DistributedElasticitySystem); every process gives
+      /// all of p_E.
+      void
+      set_equivalent_pressures(const std::vector<double> &p_E_matrix,
+                               const std::vector<double> &p_E_fracture,
+                               const double               biot)
+      {
+        system.set_equivalent_pressures(p_E_matrix, p_E_fracture, biot);
+      }
+
+      /// (u, lambda) in the numbering of @p serial_dofs (the same FE on the serial cut mesh) on
+      /// every process. Collective.
+      void
+      replicate_state(const DoFHandler<dim> &serial_dofs,
+                      Vector<double>        &displacement,
+                      Vector<double>        &multipliers) const;
+      /// Sets (u, lambda) from the serial numbering of @p serial_dofs (the same on every
+      /// process); the next warm-started solve starts from it.
+      void
+      set_state(const DoFHandler<dim> &serial_dofs,
+                const Vector<double>  &displacement,
+                const Vector<double>  &multipliers);
 
       const ContactStatistics &
       statistics() const
@@ -111,6 +135,7 @@ namespace porofrac
       FrictionField<dim>                                   friction_field;
       ContactSolver<dim, DistributedElasticitySystem<dim>> solver;
       VectorType                                           u, lambda;
+      bool                                                 solved_once = false;
     };
 
     /**

@@ -43,8 +43,9 @@ namespace porofrac
      * Each side of a fracture face is computed by the owner of its cell and sent to the rows'
      * owners by the matrices' compress(): the two cells of a face need not be on one process.
      *
-     * Not yet distributed (serial ElasticitySystem only): axisymmetric mode is, the
-     * poromechanical loads (set_equivalent_pressures), cell divergences and energies are not.
+     * The poromechanical loads of eq. (11b) are assembled on owned cells
+     * (set_equivalent_pressures); the cell divergences and energies the coupling reads are the
+     * serial ElasticitySystem's, on the state gathered from this one.
      */
     template <int dim>
     class DistributedElasticitySystem
@@ -150,6 +151,13 @@ namespace porofrac
       Tensor<2, dim>
       frame(const unsigned int f) const;
 
+      /// Poromechanical loads of eq. (11b) (see ElasticitySystem::set_equivalent_pressures):
+      /// p_E per serial active cell index and per fracture face, given on every process.
+      void
+      set_equivalent_pressures(const std::vector<double> &p_E_matrix,
+                               const std::vector<double> &p_E_fracture,
+                               const double               biot);
+
       /// @name The interface of the contact iterations (see ElasticitySystem)
       /// @{
       using VectorType                                     = TrilinosWrappers::MPI::Vector;
@@ -235,7 +243,15 @@ namespace porofrac
       TrilinosWrappers::SparseMatrix K_full, K_constrained;
       TrilinosWrappers::SparseMatrix coupling, coupling_free, coupling_free_T;
       VectorType                     f;
+      VectorType                     f_fixed; ///< f without the poromechanical loads
       std::vector<double>            face_measures;
+      /// int div phi_i over an owned cell, per dof with a nonzero integral (the Biot load).
+      struct CellDivergence
+      {
+        unsigned int                                            cell; ///< serial index
+        std::vector<std::pair<types::global_dof_index, double>> entries;
+      };
+      std::vector<CellDivergence> divergence;
     };
   } // namespace mechanics
 } // namespace porofrac
