@@ -241,6 +241,10 @@ namespace porofrac
         /// Report and summary.json entries of the finished run; its postprocessors.
         void
         finish(const PhysicsParameters &parameters, const geometry::CutMesh<dim> &mesh);
+        /// The run's totals in summary.json (steps, time, iterations, balances, face states),
+        /// also for a run that failed or was interrupted.
+        void
+        summarize_totals();
 
         AdaptiveTimeStepper stepper;
 
@@ -477,6 +481,24 @@ namespace porofrac
       CoupledRun<dim>::finish(const PhysicsParameters &physics, const geometry::CutMesh<dim> &mesh)
       {
         report_run(pm, stepper, totals, energy->max_violation(), context.report);
+        summarize_totals();
+        flow::report_linear_solver(pm.flow.solver->linear_solver_name(),
+                                   pm.flow.solver->linear_statistics(),
+                                   context.report);
+        SceneView<dim> scene{mesh, physics};
+        scene.mechanics     = &mech;
+        scene.flow          = &flow;
+        scene.poromechanics = &pm;
+        scene.time          = stepper.time();
+        run_postprocessors_on_writer(scene, context);
+      }
+
+
+
+      template <int dim>
+      void
+      CoupledRun<dim>::summarize_totals()
+      {
         auto &summary        = context.summary;
         summary["mechanics"] = summarize_mechanics(pm, totals, initial_mechanics_iterations);
         io::Json cpl         = io::Json::object();
@@ -496,19 +518,9 @@ namespace porofrac
         summary["flow_linear_solver"] =
           flow::linear_solver_summary(pm.flow.solver->linear_solver_name(),
                                       pm.flow.solver->linear_statistics());
-        flow::report_linear_solver(pm.flow.solver->linear_solver_name(),
-                                   pm.flow.solver->linear_statistics(),
-                                   context.report);
         summary["mass_balance_error_max"]          = totals.mass_error_max;
         summary["energy_inequality_violation_max"] = energy->max_violation();
         summary["mean_fracture_width"]             = pm.mean_fracture_width();
-
-        SceneView<dim> scene{mesh, physics};
-        scene.mechanics     = &mech;
-        scene.flow          = &flow;
-        scene.poromechanics = &pm;
-        scene.time          = stepper.time();
-        run_postprocessors_on_writer(scene, context);
       }
     } // namespace
 
@@ -531,7 +543,8 @@ namespace porofrac
         [&]() { run.accept(); },
         [&](const bool restore_first) { run.write_accepted_state(restore_first); },
         context.progress,
-        context.communicator);
+        context.communicator,
+        [&]() { run.summarize_totals(); });
       run.finish(parameters, mesh);
     }
 

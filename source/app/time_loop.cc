@@ -43,8 +43,14 @@ namespace porofrac
                   const std::function<void()>                         &accept,
                   const std::function<void(const bool restore_first)> &write_accepted_state,
                   dealii::ConditionalOStream                          &progress,
-                  const MPI_Comm                                       communicator)
+                  const MPI_Comm                                       communicator,
+                  const std::function<void()>                         &on_stop)
     {
+      const auto stop = [&](const bool restore_first) {
+        write_accepted_state(restore_first);
+        if (on_stop)
+          on_stop();
+      };
       const auto at = [&]() { return " at t = " + io::to_text(stepper.time()) + " s"; };
       while (!stepper.finished())
         {
@@ -56,7 +62,7 @@ namespace porofrac
             }
           catch (const Interrupted &)
             {
-              write_accepted_state(true);
+              stop(true);
               throw Interrupted(
                 label + ": " + std::string(interrupt_description()) +
                 " received during the step from t = " + io::to_text(stepper.time()) +
@@ -64,7 +70,7 @@ namespace porofrac
             }
           if (!converged)
             {
-              write_accepted_state(true);
+              stop(true);
               throw SolverFailure(label + ": no convergence" + at() + " after " +
                                   std::to_string(stepper.cuts()) +
                                   " time-step cuts; last failure: " + failure +
@@ -75,7 +81,7 @@ namespace porofrac
           if (dealii::Utilities::MPI::max(interrupt_signal(), communicator) != 0 &&
               !stepper.finished())
             {
-              write_accepted_state(false);
+              stop(false);
               throw Interrupted(label + ": " + std::string(interrupt_description()) +
                                 " received; stopped after step " +
                                 std::to_string(stepper.step_number()) + at() +

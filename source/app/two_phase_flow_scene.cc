@@ -107,6 +107,10 @@ namespace porofrac
         /// Report and summary.json entries of the finished run; its postprocessors.
         void
         finish(const PhysicsParameters &parameters);
+        /// The run's totals in summary.json (steps, time, iterations, mass balance), also for a
+        /// run that failed or was interrupted.
+        void
+        summarize_totals();
 
         AdaptiveTimeStepper stepper;
 
@@ -363,6 +367,23 @@ namespace porofrac
 
       template <int dim>
       void
+      FlowRun<dim>::summarize_totals()
+      {
+        auto &summary                                  = context.summary;
+        summary["n_time_steps"]                        = stepper.step_number();
+        summary["final_time"]                          = stepper.time();
+        summary["mass_balance_error_max"]              = totals.mass_error_max;
+        summary["flow_newton_iterations"]              = totals.newton;
+        summary["flow_newton_iterations_max_per_step"] = totals.max_step_newton;
+        summary["time_step_cuts"]                      = totals.cuts;
+        summary["flow_linear_solver"] =
+          flow::linear_solver_summary(solver.linear_solver_name(), solver.linear_statistics());
+      }
+
+
+
+      template <int dim>
+      void
       FlowRun<dim>::finish(const PhysicsParameters &parameters)
       {
         const auto  volumes         = solver.phase_volumes(solver.state);
@@ -377,15 +398,8 @@ namespace porofrac
         report_saturation_ranges(model, context.report);
         context.report << "Flow: mass balance error per step below 1e-10: "
                        << (totals.mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl;
-        auto &summary                                  = context.summary;
-        summary["n_time_steps"]                        = stepper.step_number();
-        summary["final_time"]                          = stepper.time();
-        summary["mass_balance_error_max"]              = totals.mass_error_max;
-        summary["flow_newton_iterations"]              = totals.newton;
-        summary["flow_newton_iterations_max_per_step"] = totals.max_step_newton;
-        summary["time_step_cuts"]                      = totals.cuts;
-        summary["flow_linear_solver"] =
-          flow::linear_solver_summary(solver.linear_solver_name(), solver.linear_statistics());
+        summarize_totals();
+        auto &summary = context.summary;
         flow::report_linear_solver(solver.linear_solver_name(),
                                    solver.linear_statistics(),
                                    context.report);
@@ -422,7 +436,8 @@ namespace porofrac
         [&]() { run.accept(); },
         [&](const bool restore_first) { run.write_accepted_state(restore_first); },
         context.progress,
-        context.communicator);
+        context.communicator,
+        [&]() { run.summarize_totals(); });
       run.finish(parameters);
     }
 

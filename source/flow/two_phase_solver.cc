@@ -476,11 +476,11 @@ namespace porofrac
     double
     TwoPhaseSolver<dim>::limit_capillary_change(const unsigned int i,
                                                 const double       pc_old,
-                                                double             dpc) const
+                                                double             dpc,
+                                                const double       lim) const
     {
       const bool           interface = grid.nodes[i].kind == TpfaGrid<dim>::NodeKind::interface;
       const SaturationLaw &law       = *rocks[grid.nodes[i].rock].saturation;
-      const double         lim       = capillary_chop_limit(i);
       if (lim > 0 && std::abs(dpc) > lim)
         dpc = dpc > 0 ? lim : -lim;
       // Stop at the kink of S at p_c = p_e when leaving the two-phase region.
@@ -583,7 +583,8 @@ namespace porofrac
           {
             const std::array<double, 2> dp     = {{-update(dof(i, 0)), -update(dof(i, 1))}};
             const double                pc_old = state[i][1] - state[i][0];
-            const double                dpc    = limit_capillary_change(i, pc_old, dp[1] - dp[0]);
+            const double                lim    = capillary_chop_limit(i);
+            const double                dpc = limit_capillary_change(i, pc_old, dp[1] - dp[0], lim);
             // Keep the update of the phase that fills most of the node's pores (the one whose
             // pressure the fluxes determine best); the other follows from p_c.
             const SaturationLaw &law         = *rocks[grid.nodes[i].rock].saturation;
@@ -604,7 +605,6 @@ namespace porofrac
               ++n_kink_crossings;
             if (std::abs(dpc - (dp[1] - dp[0])) > 1e-12 * std::abs(dp[1] - dp[0]))
               ++n_chopped;
-            const double lim = capillary_chop_limit(i);
             if (lim > 0 && std::abs(dp[1] - dp[0]) > lim)
               ++n_capillary_chopped;
           }

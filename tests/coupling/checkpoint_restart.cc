@@ -5,7 +5,8 @@
 // same history.csv, fractures.csv and flow/poromechanics.pvd, byte for byte, as the
 // uninterrupted one, and the same summary totals. Then the coupled run gets a SIGINT while it
 // prints step 5: it stops after that step with the Interrupted exception, "status":
-// "interrupted" and a checkpoint, from which a restart again ends as the uninterrupted run.
+// "interrupted", the totals of its 5 steps in summary.json and a checkpoint, from which a restart
+// again ends as the uninterrupted run.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -157,6 +158,12 @@ main(int argc, char **argv)
   std::cout << "summary status interrupted: "
             << (text("interrupted/summary.json").find("\"status\": \"interrupted\"") !=
                     std::string::npos ?
+                  "yes" :
+                  "no")
+            << std::endl;
+  // The totals of the 5 accepted steps are in it too.
+  std::cout << "summary of the interrupted run has n_time_steps 5: "
+            << (text("interrupted/summary.json").find("\"n_time_steps\": 5,") != std::string::npos ?
                   "yes" :
                   "no")
             << std::endl;

@@ -32,7 +32,8 @@ namespace porofrac
      * last accepted state (its argument: whether the scene must first restore it, because an
      * attempt changed it) and a SolverFailure or Interrupted naming @p label and the time is
      * thrown. The processes of @p communicator (that run the loop together) stop after the
-     * same step when a signal reaches any of them.
+     * same step when a signal reaches any of them. Before it is thrown, @p on_stop (if given)
+     * records what the scene reports of a finished run (summary.json totals).
      */
     void
     run_time_loop(AdaptiveTimeStepper                                 &stepper,
@@ -41,7 +42,8 @@ namespace porofrac
                   const std::function<void()>                         &accept,
                   const std::function<void(const bool restore_first)> &write_accepted_state,
                   dealii::ConditionalOStream                          &progress,
-                  const MPI_Comm communicator = MPI_COMM_SELF);
+                  const MPI_Comm                                       communicator = MPI_COMM_SELF,
+                  const std::function<void()>                         &on_stop      = {});
   } // namespace app
 } // namespace porofrac
 

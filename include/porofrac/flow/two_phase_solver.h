@@ -271,10 +271,13 @@ namespace porofrac
       double
       capillary_chop_limit(const unsigned int i) const;
       /// The change @p dpc of node @p i's capillary pressure that Newton proposes, limited by the
-      /// capillary chop, the kink stop, the entry slope, the capillary bound and the saturation
-      /// chop (NewtonParameters).
+      /// capillary chop (@p chop_limit, capillary_chop_limit(i)), the kink stop, the entry slope,
+      /// the capillary bound and the saturation chop (NewtonParameters).
       double
-      limit_capillary_change(const unsigned int i, const double pc_old, double dpc) const;
+      limit_capillary_change(const unsigned int i,
+                             const double       pc_old,
+                             double             dpc,
+                             const double       chop_limit) const;
       /// Verbose: the node and phase of the largest residual entry.
       void
       report_largest_residual(const Vector<double> &residual, ConditionalOStream &verbose) const;
