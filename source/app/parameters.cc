@@ -30,8 +30,8 @@ namespace porofrac
         "solver of Mechanics/Distributed linear solver; doc/parallel.md) when the run has more "
         "than one MPI process and the serial code otherwise; 'always' runs the distributed code "
         "on one process too. Poromechanics distributes its flow and solves the same serial "
-        "contact problem on every process; 'mesh only' runs on rank 0 while the other processes "
-        "wait.");
+        "contact problem on every process, or a distributed one with Coupling/Distributed "
+        "contact mechanics; 'mesh only' runs on rank 0 while the other processes wait.");
       prm.declare_entry("Scene name",
                         "",
                         Patterns::Anything(),
