@@ -81,9 +81,6 @@ namespace porofrac
       const std::vector<double> p_fracture(x.begin() + n_matrix, x.end());
       const auto                count = [&](const mechanics::ContactStatistics &s) {
         report.mechanics_iterations += s.iterations;
-        report.mechanics_factorizations += s.factorizations;
-        report.mechanics_linear_iterations += s.linear_iterations;
-        report.mechanics_direct_fallbacks += s.direct_fallbacks;
         linear_totals[0] += s.factorizations;
         linear_totals[1] += s.linear_iterations;
         linear_totals[2] += s.direct_fallbacks;

@@ -36,11 +36,7 @@ namespace porofrac
       unsigned int gmres_iterations       = 0;
       unsigned int flow_newton_iterations = 0; ///< summed over all flow solves of the step
       unsigned int mechanics_iterations   = 0; ///< summed over all contact solves of the step
-      /// Linear solves of the contact iterations, summed over the step: factorizations, Krylov
-      /// iterations and Krylov solves replaced by a direct one.
-      unsigned int mechanics_factorizations = 0, mechanics_linear_iterations = 0,
-                   mechanics_direct_fallbacks = 0;
-      double                relative_residual = 0;
+      double       relative_residual      = 0;
       std::array<double, 2> mass_defect{{0., 0.}};
       std::string           failure; ///< why the step failed, empty when converged
     };
