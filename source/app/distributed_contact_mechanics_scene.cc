@@ -16,7 +16,8 @@ namespace porofrac
     namespace
     {
       /// The deck's postprocessors, on rank 0, on a serial ContactProblem that holds the
-      /// distributed solution (gathered there). Collective.
+      /// distributed solution (gathered there); its matrices are assembled only for the
+      /// postprocessors that need them. Collective.
       template <int dim>
       void
       run_postprocessors_on_rank_0(const PhysicsParameters                         &parameters,
@@ -34,7 +35,7 @@ namespace porofrac
                                                                     parameters.mechanics,
                                                                     context.progress,
                                                                     context.timer);
-          serial->setup();
+          serial->setup(postprocessors_need_system_matrices<dim>(parameters));
         });
         const Vector<double> u =
           problem.gather_displacement(serial ? &serial->get_dof_handler() : nullptr);

@@ -16,40 +16,13 @@ namespace porofrac
 {
   namespace mechanics
   {
-    namespace
-    {
-      /// The owned entries of a (u, lambda) vector, in the order of its index set, are those of
-      /// the displacements followed by those of the multipliers (all displacement indices are
-      /// below the multiplier ones).
-      void
-      split(const TrilinosWrappers::MPI::Vector &x,
-            TrilinosWrappers::MPI::Vector       &u,
-            TrilinosWrappers::MPI::Vector       &lambda)
-      {
-        AssertDimension(x.locally_owned_size(),
-                        u.locally_owned_size() + lambda.locally_owned_size());
-        const auto middle = x.begin() + u.locally_owned_size();
-        std::copy(x.begin(), middle, u.begin());
-        std::copy(middle, x.end(), lambda.begin());
-      }
-
-      void
-      join(const TrilinosWrappers::MPI::Vector &u,
-           const TrilinosWrappers::MPI::Vector &lambda,
-           TrilinosWrappers::MPI::Vector       &x)
-      {
-        AssertDimension(x.locally_owned_size(),
-                        u.locally_owned_size() + lambda.locally_owned_size());
-        std::copy(lambda.begin(), lambda.end(), std::copy(u.begin(), u.end(), x.begin()));
-      }
-
-    } // namespace
 
 
 
     template <int dim>
     ContactBlockPreconditioner<dim>::ContactBlockPreconditioner(
-      const DistributedElasticitySystem<dim> &system)
+      const DistributedElasticitySystem<dim> &system,
+      const bool                              smoothed_prolongator)
         : system(system)
         , schur_lu("contact preconditioner (multiplier Schur complement)")
     {
@@ -67,6 +40,8 @@ namespace porofrac
       ml.set("smoother: sweeps", 2);
       ml.set("aggregation: threshold", 1e-4);
       ml.set("coarse: type", "Amesos-KLU");
+      if (!smoothed_prolongator)
+        ml.set("aggregation: damping factor", 0.);
       amg.initialize(K, ml);
 
       // G = B_0 diag(K)^-1 B_0^T, and the pattern of S~: per owned face, the union of the G

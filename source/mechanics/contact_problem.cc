@@ -21,9 +21,9 @@ namespace porofrac
 
     template <int dim>
     void
-    ContactProblem<dim>::setup()
+    ContactProblem<dim>::setup(const bool assemble_matrices)
     {
-      system.setup();
+      system.setup(assemble_matrices);
       solver.clear();
       friction_field.initialize(system.get_mesh(), prm);
       u.reinit(system.n_displacement_dofs());
@@ -37,6 +37,8 @@ namespace porofrac
     const ContactStatistics &
     ContactProblem<dim>::solve(const bool warm_start)
     {
+      AssertThrow(system.has_matrices(),
+                  ExcMessage("ContactProblem::solve() needs setup() with the matrices"));
       const bool cold = !(warm_start && solved_once);
       solved_once     = true;
       return solver.solve(u, lambda, cold);

@@ -34,7 +34,7 @@ namespace porofrac
         DistributedDirectSolver(const DistributedElasticitySystem<dim> &system,
                                 const unsigned int                      reuse_iterations)
             : system(system)
-            , jacobian(system)
+            , jacobian(system, DistributedJacobian<dim>::Storage::whole_matrix)
             , lu("contact mechanics")
             , reuse_iterations(reuse_iterations)
         {

@@ -13,6 +13,7 @@
 #include <porofrac/mechanics/distributed_elasticity_system.h>
 #include <porofrac/mechanics/elasticity_assembly.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -126,12 +127,34 @@ namespace porofrac
       owned_all.add_indices(owned_lambda, dof_handler.n_dofs());
       owned_all.compress();
       make_constraints();
-      make_matrix(K_full, owned_u, owned_u, relevant_u, comm, [&](DynamicSparsityPattern &dsp) {
-        DoFTools::make_sparsity_pattern(dof_handler, dsp);
+      make_matrix(
+        K_constrained, owned_u, owned_u, relevant_u, comm, [&](DynamicSparsityPattern &dsp) {
+          DoFTools::make_sparsity_pattern(dof_handler, dsp);
+        });
+      make_matrix(K_boundary, owned_u, owned_u, relevant_u, comm, [&](auto &dsp) {
+        std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && has_constrained_dofs(cell, local))
+            for (const auto i : local)
+              for (const auto j : local)
+                dsp.add(i, j);
       });
-      K_constrained.reinit(K_full);
       make_coupling();
       assemble();
+    }
+
+
+
+    template <int dim>
+    bool
+    DistributedElasticitySystem<dim>::has_constrained_dofs(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      std::vector<types::global_dof_index>                 &local) const
+    {
+      cell->get_dof_indices(local);
+      return std::any_of(local.begin(), local.end(), [&](const auto i) {
+        return constraints_hom.is_constrained(i);
+      });
     }
 
 
@@ -231,7 +254,17 @@ namespace porofrac
             assemble_cell_volume(prm, fe, cell, loads, scratch);
             assemble_cell_boundary(prm, fe, cell, loads, scratch);
             cell->get_dof_indices(scratch.local);
-            K_full.add(scratch.local, scratch.matrix);
+            if (has_constrained_dofs(cell, scratch.local))
+              {
+                // K_boundary = K - K_constrained on the cells with constrained dofs (on the
+                // others the two agree).
+                K_boundary.add(scratch.local, scratch.matrix);
+                scratch.matrix *= -1.;
+                constraints_hom.distribute_local_to_global(scratch.matrix,
+                                                           scratch.local,
+                                                           K_boundary);
+                scratch.matrix *= -1.;
+              }
             f.add(scratch.local, scratch.rhs);
             CellDivergence d{mesh.serial_cell(cell)->active_cell_index(), {}};
             for (unsigned int i = 0; i < scratch.local.size(); ++i)
@@ -255,7 +288,7 @@ namespace porofrac
             for (const auto &[key, value] : s.entries)
               f(key.first) += -p * face.normal[key.second] * value;
           }
-      K_full.compress(VectorOperation::add);
+      K_boundary.compress(VectorOperation::add);
       K_constrained.compress(VectorOperation::add);
       f.compress(VectorOperation::add);
       check_input(std::isfinite(f.l2_norm()),
@@ -347,7 +380,8 @@ namespace porofrac
       // On unconstrained rows B_0^T lambda = B^T lambda.
       r.reinit(owned_u, get_communicator());
       VectorType Bt_lambda(r);
-      K_full.vmult(r, u);
+      K_constrained.vmult(r, u);
+      K_boundary.vmult_add(r, u);
       r.sadd(-1., f);
       coupling_free_T.vmult(Bt_lambda, lambda);
       r -= Bt_lambda;

@@ -23,6 +23,9 @@ namespace porofrac
        * iterations ask for (inexact steps). The preconditioner is set up when the face rows
        * change; its AMG hierarchy and G once.
        *
+       * GMRES applies the Jacobian through the system's K and B_0^T and the face rows, so the
+       * elasticity matrix is not copied.
+       *
        * Safeguard: where the diagonal approximation of the multiplier Schur complement fails
        * (semi-smooth Newton rows with large lambda_n couplings, e.g. the second iterate from
        * the open guess, doc/parallel.md), GMRES stagnates; after Max linear iterations the step
@@ -40,12 +43,14 @@ namespace porofrac
                                    TimerOutput                            &timer)
             : system(system)
             , max_iterations(parameters.max_linear_iterations)
-            , jacobian(system)
+            , jacobian(system, DistributedJacobian<dim>::Storage::face_rows)
             , fallback("contact mechanics (direct fallback)")
             , progress(progress)
         {
           TimerOutput::Scope t(timer, "Mechanics: AMG and multiplier block setup");
-          preconditioner = std::make_unique<ContactBlockPreconditioner<dim>>(system);
+          preconditioner =
+            std::make_unique<ContactBlockPreconditioner<dim>>(system,
+                                                              parameters.amg_smoothed_prolongator);
         }
 
         void
@@ -78,13 +83,17 @@ namespace porofrac
           x = 0;
           try
             {
-              gmres.solve(jacobian.matrix(), x, rhs, *preconditioner);
+              gmres.solve(jacobian, x, rhs, *preconditioner);
             }
           catch (const SolverControl::NoConvergence &)
             {
               progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
                        << " iterations; MUMPS solves this step" << std::endl;
-              fallback.factorize(jacobian.matrix());
+              if (!whole_jacobian)
+                whole_jacobian = std::make_unique<DistributedJacobian<dim>>(
+                  system, DistributedJacobian<dim>::Storage::whole_matrix);
+              whole_jacobian->assemble(rows);
+              fallback.factorize(whole_jacobian->matrix());
               fallback.solve(x, rhs);
               ++this->stats.direct_fallbacks;
             }
@@ -105,10 +114,12 @@ namespace porofrac
         }
 
       private:
-        const DistributedElasticitySystem<dim>          &system;
-        const unsigned int                               max_iterations;
-        double                                           tolerance = 1e-8;
-        DistributedJacobian<dim>                         jacobian;
+        const DistributedElasticitySystem<dim> &system;
+        const unsigned int                      max_iterations;
+        double                                  tolerance = 1e-8;
+        DistributedJacobian<dim>                jacobian;
+        /// The Jacobian as one matrix, for MUMPS: made on the first fallback.
+        std::unique_ptr<DistributedJacobian<dim>>        whole_jacobian;
         MumpsFactorization                               fallback;
         ConditionalOStream                              &progress;
         std::unique_ptr<ContactBlockPreconditioner<dim>> preconditioner;

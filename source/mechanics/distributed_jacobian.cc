@@ -12,38 +12,74 @@ namespace porofrac
 
 
     template <int dim>
-    DistributedJacobian<dim>::DistributedJacobian(const DistributedElasticitySystem<dim> &system)
+    DistributedJacobian<dim>::DistributedJacobian(const DistributedElasticitySystem<dim> &system,
+                                                  const Storage                           storage)
         : system(system)
+        , storage(storage)
         , coupling(system.n_faces())
     {
-      const types::global_dof_index n_u  = system.n_displacement_dofs();
-      const auto                   &K    = system.get_constrained_matrix();
-      const auto                   &B    = system.get_free_coupling();
-      const auto                   &Bt   = system.get_free_coupling_transpose();
-      const IndexSet               &rows = system.owned_unknowns();
+      const types::global_dof_index n_u   = system.n_displacement_dofs();
+      const auto                   &K     = system.get_constrained_matrix();
+      const auto                   &B     = system.get_free_coupling();
+      const auto                   &Bt    = system.get_free_coupling_transpose();
+      const MPI_Comm                comm  = system.get_communicator();
+      const bool                    whole = storage == Storage::whole_matrix;
       for_owned_entries(B, [&](const auto row, const auto column, const double value) {
         if (value != 0)
           coupling[row / dim].push_back({column, static_cast<unsigned int>(row % dim), value});
       });
-      DynamicSparsityPattern dsp(rows.size(), rows.size(), rows);
-      for_owned_entries(K, [&](const auto r, const auto c, const double) { dsp.add(r, c); });
-      for_owned_entries(Bt, [&](const auto r, const auto c, const double) { dsp.add(r, n_u + c); });
-      // A face row couples to the dofs of every component of the face's jump.
+      // The face rows' pattern: a face row couples to the dofs of every component of the
+      // face's jump, and to the face's multipliers. Its rows are offset by n_u in the whole
+      // matrix.
+      const IndexSet        &rows   = whole ? system.owned_unknowns() : system.owned_multipliers();
+      const auto             offset = whole ? n_u : 0;
+      DynamicSparsityPattern dsp(rows.size(), system.n_dofs(), rows);
       for_owned_entries(B, [&](const auto r, const auto c, const double) {
         for (unsigned int i = 0; i < dim; ++i)
-          dsp.add(n_u + dim * (r / dim) + i, c);
+          dsp.add(offset + dim * (r / dim) + i, c);
       });
       for (const unsigned int f : system.get_distributed_mesh().locally_owned_faces())
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            dsp.add(n_u + dim * f + i, n_u + dim * f + j);
-      base.reinit(rows, rows, dsp, system.get_communicator());
-      for_owned_entries(K, [&](const auto r, const auto c, const double v) { base.set(r, c, v); });
+            dsp.add(offset + dim * f + i, n_u + dim * f + j);
+      if (!whole)
+        {
+          matrix_.reinit(rows, system.owned_unknowns(), dsp, comm);
+          x_u.reinit(system.owned_displacements(), comm);
+          y_u.reinit(x_u);
+          x_lambda.reinit(rows, comm);
+          y_lambda.reinit(x_lambda);
+          return;
+        }
+      for_owned_entries(K, [&](const auto r, const auto c, const double) { dsp.add(r, c); });
+      for_owned_entries(Bt, [&](const auto r, const auto c, const double) { dsp.add(r, n_u + c); });
+      matrix_.reinit(rows, rows, dsp, comm);
+      for_owned_entries(K,
+                        [&](const auto r, const auto c, const double v) { matrix_.set(r, c, v); });
       for_owned_entries(Bt, [&](const auto r, const auto c, const double v) {
-        base.set(r, n_u + c, v);
+        matrix_.set(r, n_u + c, v);
       });
-      base.compress(VectorOperation::insert);
-      jacobian.reinit(base);
+      matrix_.compress(VectorOperation::insert);
+    }
+
+
+
+    template <int dim>
+    template <typename Visit>
+    void
+    DistributedJacobian<dim>::for_face_row_entries(const FaceRows<dim> &rows,
+                                                   const unsigned int   f,
+                                                   const Visit         &visit) const
+    {
+      const types::global_dof_index n_u = system.n_displacement_dofs();
+      const double                  m   = system.face_measure(f);
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          for (unsigned int k = 0; k < dim; ++k)
+            visit(i, n_u + dim * f + k, rows.lambda[f][i][k]);
+          for (const CouplingEntry &e : coupling[f])
+            visit(i, e.dof, rows.jump[f][i][e.component] * e.value / m);
+        }
     }
 
 
@@ -52,21 +88,45 @@ namespace porofrac
     void
     DistributedJacobian<dim>::assemble(const FaceRows<dim> &rows)
     {
-      const types::global_dof_index n_u = system.n_displacement_dofs();
-      jacobian.copy_from(base);
+      const types::global_dof_index offset =
+        storage == Storage::whole_matrix ? system.n_displacement_dofs() : 0;
       for (const unsigned int f : system.get_distributed_mesh().locally_owned_faces())
         {
-          const double m = system.face_measure(f);
           for (unsigned int i = 0; i < dim; ++i)
-            {
-              const types::global_dof_index row = n_u + dim * f + i;
-              for (unsigned int k = 0; k < dim; ++k)
-                jacobian.add(row, n_u + dim * f + k, rows.lambda[f][i][k]);
-              for (const CouplingEntry &e : coupling[f])
-                jacobian.add(row, e.dof, rows.jump[f][i][e.component] * e.value / m);
-            }
+            zero_row(matrix_, offset + dim * f + i);
+          for_face_row_entries(rows, f, [&](const unsigned int i, const auto column, double v) {
+            matrix_.add(offset + dim * f + i, column, v);
+          });
         }
-      jacobian.compress(VectorOperation::add);
+      matrix_.compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    const TrilinosWrappers::SparseMatrix &
+    DistributedJacobian<dim>::matrix() const
+    {
+      Assert(storage == Storage::whole_matrix, ExcInternalError());
+      return matrix_;
+    }
+
+
+
+    template <int dim>
+    void
+    DistributedJacobian<dim>::vmult(VectorType &dst, const VectorType &src) const
+    {
+      if (storage == Storage::whole_matrix)
+        {
+          matrix_.vmult(dst, src);
+          return;
+        }
+      split(src, x_u, x_lambda);
+      system.get_constrained_matrix().vmult(y_u, x_u);
+      system.get_free_coupling_transpose().vmult_add(y_u, x_lambda);
+      matrix_.vmult(y_lambda, src);
+      join(y_u, y_lambda, dst);
     }
 
 

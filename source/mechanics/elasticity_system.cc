@@ -62,11 +62,17 @@ namespace porofrac
 
     template <int dim>
     void
-    ElasticitySystem<dim>::setup()
+    ElasticitySystem<dim>::setup(const bool assemble_matrices)
     {
       TimerOutput::Scope t(timer, "Mechanics: setup");
       dof_handler.distribute_dofs(fe);
       make_constraints();
+      matrices_assembled = assemble_matrices;
+      if (!assemble_matrices)
+        {
+          make_coupling(nullptr);
+          return;
+        }
       const unsigned int                   N = n_dofs();
       DynamicSparsityPattern               dsp(N, N);
       std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
@@ -78,7 +84,7 @@ namespace porofrac
             for (const auto j : local)
               dsp.add(i, j);
         }
-      make_coupling(dsp);
+      make_coupling(&dsp);
       sparsity.copy_from(dsp);
       K_full.reinit(sparsity);
       base_matrix.reinit(sparsity);
@@ -113,7 +119,7 @@ namespace porofrac
 
     template <int dim>
     void
-    ElasticitySystem<dim>::make_coupling(DynamicSparsityPattern &dsp)
+    ElasticitySystem<dim>::make_coupling(DynamicSparsityPattern *dsp)
     {
       // Coupling int_sigma lambda . [v] (paper eq. (10)), [v] = v+ - v-.
       const unsigned int           n_u = dof_handler.n_dofs();
@@ -142,15 +148,15 @@ namespace porofrac
           for (const auto &[key, v] : entries)
             if (std::abs(v) > 1e-14 * face_measures[face.index])
               coupling[face.index].push_back({key.first, key.second, v});
-          for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int i = 0; dsp != nullptr && i < dim; ++i)
             {
               const unsigned int row = n_u + dim * face.index + i;
               for (unsigned int j = 0; j < dim; ++j)
-                dsp.add(row, n_u + dim * face.index + j);
+                dsp->add(row, n_u + dim * face.index + j);
               for (const auto &e : coupling[face.index])
                 {
-                  dsp.add(row, e.dof);
-                  dsp.add(e.dof, row);
+                  dsp->add(row, e.dof);
+                  dsp->add(e.dof, row);
                 }
             }
         }

@@ -179,6 +179,15 @@ namespace porofrac
                         "Iterative linear solvers: Krylov iterations per solve before the step "
                         "is solved by the direct solver instead (counted in summary.json, "
                         "mechanics/linear_direct_fallbacks).");
+      prm.declare_entry(
+        "AMG prolongator",
+        "smoothed",
+        Patterns::Selection("smoothed|unsmoothed"),
+        "Iterative linear solver: the prolongator of the AMG hierarchy of the elasticity block. "
+        "'smoothed': smoothed aggregation (fewer Krylov iterations); 'unsmoothed': the "
+        "tentative prolongator of plain aggregation, about half the memory of the whole run "
+        "for 3D P2 (the smoothed prolongator's Galerkin products dominate it) for about 1.4 "
+        "times the iterations (doc/benchmarks/penny.md).");
       prm.declare_entry("Report linear solve time",
                         "false",
                         Patterns::Bool(),
@@ -318,6 +327,7 @@ namespace porofrac
       linear_tolerance                 = prm.get_double(p, "Linear solver tolerance");
       linear_forcing                   = prm.get_double(p, "Linear solver forcing");
       max_linear_iterations            = prm.get_integer(p, "Max linear iterations");
+      amg_smoothed_prolongator         = prm.get(p, "AMG prolongator") == "smoothed";
 
       dirichlet = parse_component_map(prm.get(p, "Dirichlet"), dim, "Mechanics/Dirichlet");
       traction  = parse_component_map(prm.get(p, "Traction"), dim, "Mechanics/Traction");

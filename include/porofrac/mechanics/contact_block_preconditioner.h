@@ -31,7 +31,8 @@ namespace porofrac
      * G = B_0 diag(K)^-1 B_0^T, formed once (the approximation PyLith uses for its fault
      * blocks). S~ couples the faces that share displacement dofs; it is small (dim per face) and
      * is factorized by MUMPS whenever the face rows change. K~^-1 is one V-cycle of smoothed-
-     * aggregation AMG (Trilinos ML) on K with the rigid-body modes as near null space.
+     * aggregation AMG (Trilinos ML) on K with the rigid-body modes as near null space (or of
+     * plain aggregation: the tentative prolongator, deck entry Mechanics/AMG prolongator).
      * (doc/parallel.md)
      */
     template <int dim>
@@ -40,8 +41,10 @@ namespace porofrac
     public:
       using VectorType = TrilinosWrappers::MPI::Vector;
 
-      /// Builds the AMG hierarchy of K and G.
-      explicit ContactBlockPreconditioner(const DistributedElasticitySystem<dim> &system);
+      /// Builds the AMG hierarchy of K (smoothed aggregation, or plain aggregation without
+      /// @p smoothed_prolongator) and G.
+      ContactBlockPreconditioner(const DistributedElasticitySystem<dim> &system,
+                                 bool                                    smoothed_prolongator);
       ~ContactBlockPreconditioner();
 
       /// S~ for the face rows @p rows; factorizes it.

@@ -3,6 +3,7 @@
 #define POROFRAC_MECHANICS_DISTRIBUTED_CONTACT_LINEAR_SOLVER_H
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <porofrac/mechanics/contact_linear_solver.h>
 #include <porofrac/mechanics/coupling_entry.h>
@@ -25,39 +26,58 @@ namespace porofrac
       ContactLinearSolverRegistry<dim, DistributedElasticitySystem<dim>>;
 
     /**
-     * The Jacobian of the contact iterations (27) as one Trilinos matrix on the (u, lambda)
-     * unknowns of a DistributedElasticitySystem: the constrained K and B_0^T in the displacement
-     * rows (assembled once, `base`), the face rows A_lambda R lambda + A_jump R B_0 u / |sigma|
-     * in the multiplier rows (assemble()). Every row is written by its owner, so assembling
-     * needs no communication.
+     * The Jacobian of the contact iterations (27) on the (u, lambda) unknowns of a
+     * DistributedElasticitySystem: the constrained K and B_0^T in the displacement rows, the
+     * face rows A_lambda R lambda + A_jump R B_0 u / |sigma| in the multiplier rows. Every row is
+     * written by its owner, so assembling needs no communication.
+     *
+     * Storage::whole_matrix holds it as one Trilinos matrix (matrix(), for the direct
+     * solvers); assemble() rewrites the face rows in place. Storage::face_rows holds only the
+     * face rows and applies K and B_0^T of the system (vmult(), for Krylov solvers): two fewer
+     * copies of the elasticity matrix.
      */
     template <int dim>
     class DistributedJacobian
     {
     public:
-      explicit DistributedJacobian(const DistributedElasticitySystem<dim> &system);
+      using VectorType = TrilinosWrappers::MPI::Vector;
 
-      /// matrix() = base + the face rows @p rows.
+      enum class Storage
+      {
+        whole_matrix,
+        face_rows
+      };
+
+      DistributedJacobian(const DistributedElasticitySystem<dim> &system, Storage storage);
+
+      /// The face rows become @p rows.
       void
       assemble(const FaceRows<dim> &rows);
 
+      /// The whole Jacobian (Storage::whole_matrix only).
       const TrilinosWrappers::SparseMatrix &
-      matrix() const
-      {
-        return jacobian;
-      }
+      matrix() const;
 
-      /// The entries of B_0 of an owned face (dof, component, int phi), nonzero only.
-      const std::vector<CouplingEntry> &
-      face_coupling(const unsigned int f) const
-      {
-        return coupling[f];
-      }
+      /// dst = J src on (u, lambda) vectors.
+      void
+      vmult(VectorType &dst, const VectorType &src) const;
 
     private:
+      /// Calls @p visit(i, column, value) for the entries of the face rows of the owned face
+      /// @p f (i its multiplier component, column in the numbering of (u, lambda)).
+      template <typename Visit>
+      void
+      for_face_row_entries(const FaceRows<dim> &rows,
+                           const unsigned int   f,
+                           const Visit         &visit) const;
+
       const DistributedElasticitySystem<dim> &system;
+      const Storage                           storage;
       std::vector<std::vector<CouplingEntry>> coupling;
-      TrilinosWrappers::SparseMatrix          base, jacobian;
+      /// Storage::whole_matrix: the Jacobian; Storage::face_rows: the face rows alone (rows
+      /// numbered as the multipliers, columns as (u, lambda)).
+      TrilinosWrappers::SparseMatrix matrix_;
+      mutable VectorType             x_u, x_lambda, y_u, y_lambda;
     };
 
     /// Whether @p a and @p b have the same rows on the faces this process owns.

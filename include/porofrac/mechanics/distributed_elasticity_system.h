@@ -224,7 +224,12 @@ namespace porofrac
       /// Patterns and values of the coupling matrices, and the face measures.
       void
       make_coupling();
-      /// K (both), f, and the fracture-pressure loads.
+      /// Whether @p cell has a dof constrained by the homogeneous constraints; its dofs go to
+      /// @p local.
+      bool
+      has_constrained_dofs(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                           std::vector<types::global_dof_index>                 &local) const;
+      /// K_constrained, K_boundary, f, and the fracture-pressure loads.
       void
       assemble();
       /// f - K u - B^T lambda on the owned displacement dofs (constrained rows not zeroed).
@@ -240,7 +245,10 @@ namespace porofrac
       IndexSet                  owned_u, relevant_u, owned_lambda, owned_all;
       AffineConstraints<double> constraints, constraints_hom;
 
-      TrilinosWrappers::SparseMatrix K_full, K_constrained;
+      /// K with the homogeneous constraints applied, and K - K_constrained (nonzero only on the
+      /// cells with constrained dofs): K u = K_constrained u + K_boundary u, without a second
+      /// copy of K.
+      TrilinosWrappers::SparseMatrix K_constrained, K_boundary;
       TrilinosWrappers::SparseMatrix coupling, coupling_free, coupling_free_T;
       VectorType                     f;
       VectorType                     f_fixed; ///< f without the poromechanical loads

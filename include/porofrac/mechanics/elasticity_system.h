@@ -72,9 +72,18 @@ namespace porofrac
                        const ContactParameters      &parameters,
                        TimerOutput                  &timer);
 
-      /// Dofs, constraints, the saddle-point pattern, B, K and the fixed loads.
+      /// Dofs, constraints, the saddle-point pattern, B, K and the fixed loads; without
+      /// @p assemble_matrices only dofs, constraints and B (enough to read a state: jumps,
+      /// fields, reconstructions; postprocessing of a solution computed elsewhere).
       void
-      setup();
+      setup(bool assemble_matrices = true);
+
+      /// Whether setup() assembled the pattern, K and the loads.
+      bool
+      has_matrices() const
+      {
+        return matrices_assembled;
+      }
 
       unsigned int
       n_displacement_dofs() const
@@ -271,7 +280,7 @@ namespace porofrac
       void
       make_constraints();
       void
-      make_coupling(DynamicSparsityPattern &dsp);
+      make_coupling(DynamicSparsityPattern *dsp);
       void
       assemble();
       void
@@ -292,8 +301,9 @@ namespace porofrac
       SparsityPattern                         sparsity;
       SparseMatrix<double>                    K_full;      ///< unconstrained elasticity (residuals)
       SparseMatrix<double>                    base_matrix; ///< constrained K + B^T
-      Vector<double>                          f;           ///< load vector: f_fixed + p_E loads
-      Vector<double>                          f_fixed;     ///< the deck's loads only
+      bool                                    matrices_assembled = false;
+      Vector<double>                          f;       ///< load vector: f_fixed + p_E loads
+      Vector<double>                          f_fixed; ///< the deck's loads only
       std::vector<std::vector<CouplingEntry>> coupling;
       /// Per active cell: (dof, int_K div phi_dof) so that int_K div u = sum value * u(dof).
       std::vector<std::vector<std::pair<types::global_dof_index, double>>> divergence;

@@ -124,6 +124,9 @@ namespace porofrac
       /// Iterative linear solvers: at most this many Krylov iterations per solve (then the
       /// step is solved directly).
       unsigned int max_linear_iterations = 200;
+      /// Iterative linear solver: smoothed-aggregation AMG, else the unsmoothed (tentative)
+      /// prolongator.
+      bool amg_smoothed_prolongator = true;
 
       ContactReports reports;
     };

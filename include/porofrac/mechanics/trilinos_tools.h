@@ -5,6 +5,9 @@
 #include <deal.II/base/types.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <algorithm>
 
 #include <Epetra_CrsMatrix.h>
 
@@ -46,6 +49,45 @@ namespace porofrac
         for_entries_of_row(matrix,
                            static_cast<dealii::types::global_dof_index>(A.RowMap().GID(local)),
                            visit);
+    }
+
+    /// Sets the stored entries of the locally owned row @p row of @p matrix to zero; the
+    /// sparsity pattern stays.
+    inline void
+    zero_row(dealii::TrilinosWrappers::SparseMatrix &matrix,
+             const dealii::types::global_dof_index   row)
+    {
+      Epetra_CrsMatrix &A     = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
+      const int         local = A.RowMap().LID(static_cast<int>(row));
+      int               n     = 0;
+      double           *values;
+      int              *columns;
+      A.ExtractMyRowView(local, n, values, columns);
+      std::fill(values, values + n, 0.);
+    }
+
+    /// The owned entries of a (u, lambda) vector, in the order of its index set, are those of
+    /// the displacements followed by those of the multipliers (all displacement indices are
+    /// below the multiplier ones): copies them into @p u and @p lambda.
+    inline void
+    split(const dealii::TrilinosWrappers::MPI::Vector &x,
+          dealii::TrilinosWrappers::MPI::Vector       &u,
+          dealii::TrilinosWrappers::MPI::Vector       &lambda)
+    {
+      AssertDimension(x.locally_owned_size(), u.locally_owned_size() + lambda.locally_owned_size());
+      const auto middle = x.begin() + u.locally_owned_size();
+      std::copy(x.begin(), middle, u.begin());
+      std::copy(middle, x.end(), lambda.begin());
+    }
+
+    /// The inverse of split().
+    inline void
+    join(const dealii::TrilinosWrappers::MPI::Vector &u,
+         const dealii::TrilinosWrappers::MPI::Vector &lambda,
+         dealii::TrilinosWrappers::MPI::Vector       &x)
+    {
+      AssertDimension(x.locally_owned_size(), u.locally_owned_size() + lambda.locally_owned_size());
+      std::copy(lambda.begin(), lambda.end(), std::copy(u.begin(), u.end(), x.begin()));
     }
   } // namespace mechanics
 } // namespace porofrac

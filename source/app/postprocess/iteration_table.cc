@@ -45,6 +45,12 @@ namespace porofrac
           return true;
         }
 
+        bool
+        needs_system_matrices() const override
+        {
+          return true;
+        }
+
       private:
         io::Json
         solve(mechanics::ContactProblem<dim> &problem,

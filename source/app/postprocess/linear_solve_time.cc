@@ -24,6 +24,12 @@ namespace porofrac
       class LinearSolveTime : public Postprocessor<dim>
       {
       public:
+        bool
+        needs_system_matrices() const override
+        {
+          return true;
+        }
+
         void
         execute(SceneView<dim> &scene, io::RunContext &context) override
         {

@@ -49,6 +49,20 @@ namespace porofrac
       return false;
     }
 
+    template <int dim>
+    bool
+    postprocessors_need_system_matrices(const PhysicsParameters &parameters)
+    {
+      for (const auto &e : PostprocessorRegistry<dim>::instance().entries())
+        if (const auto p = e.create(parameters); p && p->needs_system_matrices())
+          return true;
+      return false;
+    }
+
+    template bool
+    postprocessors_need_system_matrices<2>(const PhysicsParameters &);
+    template bool
+    postprocessors_need_system_matrices<3>(const PhysicsParameters &);
     template bool
     any_postprocessor<2>(const PhysicsParameters &);
     template bool

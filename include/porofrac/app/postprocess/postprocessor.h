@@ -65,6 +65,14 @@ namespace porofrac
       {
         return false;
       }
+
+      /// Whether execute() needs the mechanics' assembled system (K, the loads), not only
+      /// its state.
+      virtual bool
+      needs_system_matrices() const
+      {
+        return false;
+      }
     };
 
     template <int dim>
@@ -87,6 +95,11 @@ namespace porofrac
     template <int dim>
     bool
     any_postprocessor(const PhysicsParameters &parameters);
+
+    /// Whether a postprocessor the deck switches on needs the mechanics' assembled system.
+    template <int dim>
+    bool
+    postprocessors_need_system_matrices(const PhysicsParameters &parameters);
   } // namespace app
 } // namespace porofrac
 
