@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace porofrac
 {
@@ -71,10 +72,75 @@ namespace porofrac
     {
       if (factorized && AlR == rows_l && AjR == rows_j)
         return true;
-      Timer              clock;
-      const unsigned int m = dim * n_f;
-      rows_l               = AlR;
-      rows_j               = AjR;
+      Timer clock;
+      rows_l = AlR;
+      rows_j = AjR;
+      assemble_reduced();
+      const unsigned int m_r = offset[n_f];
+      pseudo_inverse_rank    = 0;
+      if (m_r > 0)
+        {
+          // LAPACK reports a zero pivot by an exception; the face rows of this iterate make
+          // the contact Jacobian singular, a failed step rather than an internal error.
+          bool singular = false;
+          try
+            {
+              S.compute_lu_factorization();
+            }
+          catch (const dealii::ExceptionBase &)
+            {
+              singular = true;
+            }
+          // A numerically singular S (on 3D meshes where the face-wise
+          // constant multipliers are not inf-sup stable against P2, some multiplier
+          // directions load no displacement, and face rows that leave them free make the
+          // Jacobian singular) gives a pivot at round-off; LU then returns a step of
+          // arbitrary size along them. Solve such systems by the minimum-norm least-squares
+          // step instead (truncated SVD, numerical rank at 1e-10 of the largest singular
+          // value).
+          if (!singular)
+            {
+              double pmin = std::numeric_limits<double>::max(), pmax = 0;
+              for (unsigned int i = 0; i < m_r; ++i)
+                {
+                  pmin = std::min(pmin, std::abs(S(i, i)));
+                  pmax = std::max(pmax, std::abs(S(i, i)));
+                }
+              singular = !(pmin > 1e-10 * pmax);
+            }
+          if (singular)
+            {
+              assemble_reduced();
+              S.compute_svd();
+              const double smax   = S.singular_value(0);
+              pseudo_inverse_rank = 0;
+              while (pseudo_inverse_rank < m_r &&
+                     S.singular_value(pseudo_inverse_rank) > 1e-10 * smax)
+                ++pseudo_inverse_rank;
+              if (pseudo_inverse_rank == 0)
+                {
+                  clear_rows();
+                  throw SolverFailure("the multiplier Schur complement (" + std::to_string(m_r) +
+                                      " unknowns) of the contact Jacobian is zero");
+                }
+              ++n_pseudo_inverse_solves;
+              rank_deficiency = m_r - pseudo_inverse_rank;
+            }
+        }
+      factorized = true;
+      ++n_dense_factorizations;
+      time_dense_lu += clock.wall_time();
+      return false;
+    }
+
+
+
+    template <int dim>
+    void
+    MultiplierSchurComplement<dim>::assemble_reduced()
+    {
+      const std::vector<Tensor<2, dim>> &AlR = rows_l, &AjR = rows_j;
+      const unsigned int                 m = dim * n_f;
 
       // Split each face's rows; for the rows without jump term, E_f^+ = E^T (E E^T)^{-1} and an
       // orthonormal basis of null(E_f) (Gram-Schmidt on the columns of I - E_f^+ E_f).
@@ -181,25 +247,6 @@ namespace porofrac
                   S(row, col) *= row_scale[row];
               }
           }
-      if (m_r > 0)
-        {
-          // LAPACK reports a zero pivot by an exception; the face rows of this iterate make
-          // the contact Jacobian singular, a failed step rather than an internal error.
-          try
-            {
-              S.compute_lu_factorization();
-            }
-          catch (const dealii::ExceptionBase &)
-            {
-              clear_rows();
-              throw SolverFailure("the multiplier Schur complement (" + std::to_string(m_r) +
-                                  " unknowns) of the contact Jacobian is singular");
-            }
-        }
-      factorized = true;
-      ++n_dense_factorizations;
-      time_dense_lu += clock.wall_time();
-      return false;
     }
 
     template <int dim>
@@ -215,7 +262,8 @@ namespace porofrac
       offset.clear();
       row_scale.clear();
       S.reinit(0, 0);
-      factorized = false;
+      pseudo_inverse_rank = 0;
+      factorized          = false;
     }
 
     template <int dim>
@@ -257,7 +305,27 @@ namespace porofrac
                    rows_l[f][i][k] * x(dim * f + k);
             t(offset[f] + r) = b * row_scale[offset[f] + r];
           }
-      if (m_r > 0)
+      if (m_r > 0 && pseudo_inverse_rank > 0)
+        {
+          // t = V diag(1/s_i, i < rank) U^T t
+          const LAPACKFullMatrix<double> &U = S.get_svd_u(), &Vt = S.get_svd_vt();
+          Vector<double>                  c(pseudo_inverse_rank);
+          for (unsigned int i = 0; i < pseudo_inverse_rank; ++i)
+            {
+              double s = 0;
+              for (unsigned int r = 0; r < m_r; ++r)
+                s += U(r, i) * t(r);
+              c(i) = s / S.singular_value(i);
+            }
+          for (unsigned int r = 0; r < m_r; ++r)
+            {
+              double s = 0;
+              for (unsigned int i = 0; i < pseudo_inverse_rank; ++i)
+                s += Vt(i, r) * c(i);
+              t(r) = s;
+            }
+        }
+      else if (m_r > 0)
         S.solve(t);
       for (unsigned int f = 0; f < n_f; ++f)
         for (unsigned int k = 0; k < dim; ++k)

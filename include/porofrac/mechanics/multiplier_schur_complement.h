@@ -101,6 +101,18 @@ namespace porofrac
       LAPACKFullMatrix<double> S;
       std::vector<double>      row_scale;
       bool                     factorized = false;
+      /// Numerical rank of S when it is solved by its truncated SVD (0: LU factors).
+      unsigned int pseudo_inverse_rank = 0;
+
+      /// Forms the per-face splitting and the equilibrated S of rows_l, rows_j.
+      void
+      assemble_reduced();
+
+    public:
+      /// Dense systems solved by the minimum-norm step (numerically singular S) so far, and
+      /// the rank deficiency of the last one.
+      unsigned int n_pseudo_inverse_solves = 0;
+      unsigned int rank_deficiency         = 0;
     };
   } // namespace mechanics
 } // namespace porofrac
