@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace porofrac
 {
@@ -71,10 +72,114 @@ namespace porofrac
     {
       if (factorized && AlR == rows_l && AjR == rows_j)
         return true;
-      Timer              clock;
-      const unsigned int m = dim * n_f;
-      rows_l               = AlR;
-      rows_j               = AjR;
+      Timer clock;
+      rows_l = AlR;
+      rows_j = AjR;
+      assemble_reduced();
+      const unsigned int m_r = offset[n_f];
+      null_right.clear();
+      null_left.clear();
+      svd_rank = 0;
+      if (m_r > 0)
+        {
+          // LAPACK reports a zero pivot by an exception; the face rows of this iterate make
+          // the contact Jacobian singular, a failed step rather than an internal error.
+          bool singular = false;
+          try
+            {
+              S.compute_lu_factorization();
+            }
+          catch (const dealii::ExceptionBase &)
+            {
+              singular = true;
+            }
+          // A numerically singular S (on 3D meshes where the face-wise constant multipliers
+          // are not inf-sup stable against P2, some multiplier directions load no
+          // displacement, and face rows that leave them free make the Jacobian singular)
+          // shows pivots at round-off, and LU alone returns a step of arbitrary size along its
+          // null space. Such systems get the minimum-norm least-squares step instead: with
+          // orthonormal bases V, L of the right and left null spaces (one step of inverse
+          // iteration from the LU factors each: the pivot gap is ~1e-16 against >= 1e-4 on
+          // the meshes measured), t = (I - V V^T) LU^{-1} (I - L L^T) r.
+          // An exactly zero pivot leaves no usable LU factors: the truncated SVD gives the
+          // same minimum-norm step (numerical rank at 1e-10 of the largest singular value).
+          if (singular)
+            {
+              assemble_reduced();
+              S.compute_svd();
+              const double smax = S.singular_value(0);
+              while (svd_rank < m_r && S.singular_value(svd_rank) > 1e-10 * smax)
+                ++svd_rank;
+              if (svd_rank == 0)
+                {
+                  clear_rows();
+                  throw SolverFailure("the multiplier Schur complement (" + std::to_string(m_r) +
+                                      " unknowns) of the contact Jacobian is zero");
+                }
+              ++n_deflated_factorizations;
+              factorized = true;
+              ++n_dense_factorizations;
+              time_dense_lu += clock.wall_time();
+              return false;
+            }
+          double pmax = 0;
+          for (unsigned int i = 0; i < m_r; ++i)
+            pmax = std::max(pmax, std::abs(S(i, i)));
+          unsigned int rank_deficit = 0;
+          for (unsigned int i = 0; i < m_r; ++i)
+            rank_deficit += !(std::abs(S(i, i)) > 1e-10 * pmax);
+          if (rank_deficit > 0)
+            {
+              null_right = null_space(rank_deficit, false);
+              null_left  = null_space(rank_deficit, true);
+              ++n_deflated_factorizations;
+            }
+        }
+      factorized = true;
+      ++n_dense_factorizations;
+      time_dense_lu += clock.wall_time();
+      return false;
+    }
+
+
+
+    template <int dim>
+    std::vector<Vector<double>>
+    MultiplierSchurComplement<dim>::null_space(const unsigned int n, const bool transposed) const
+    {
+      // Inverse iteration from fixed pseudo-random vectors: the LU solve amplifies the null
+      // directions by 1/(round-off pivot); two steps, then Gram-Schmidt.
+      const unsigned int          m_r = offset[n_f];
+      std::vector<Vector<double>> basis;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          Vector<double> v(m_r);
+          unsigned int   seed = 12345u + 7919u * k;
+          for (unsigned int i = 0; i < m_r; ++i)
+            {
+              seed = 1664525u * seed + 1013904223u;
+              v(i) = static_cast<double>(seed) / 4294967296. - 0.5;
+            }
+          for (unsigned int step = 0; step < 2; ++step)
+            {
+              S.solve(v, transposed);
+              for (const Vector<double> &b : basis)
+                v.add(-(v * b), b);
+              v /= v.l2_norm();
+            }
+          basis.push_back(v);
+        }
+      return basis;
+    }
+
+
+
+    template <int dim>
+    void
+    MultiplierSchurComplement<dim>::assemble_reduced()
+    {
+      const std::vector<Tensor<2, dim>> &AlR = rows_l, &AjR = rows_j;
+      const unsigned int                 m = dim * n_f;
 
       // Split each face's rows; for the rows without jump term, E_f^+ = E^T (E E^T)^{-1} and an
       // orthonormal basis of null(E_f) (Gram-Schmidt on the columns of I - E_f^+ E_f).
@@ -181,25 +286,6 @@ namespace porofrac
                   S(row, col) *= row_scale[row];
               }
           }
-      if (m_r > 0)
-        {
-          // LAPACK reports a zero pivot by an exception; the face rows of this iterate make
-          // the contact Jacobian singular, a failed step rather than an internal error.
-          try
-            {
-              S.compute_lu_factorization();
-            }
-          catch (const dealii::ExceptionBase &)
-            {
-              clear_rows();
-              throw SolverFailure("the multiplier Schur complement (" + std::to_string(m_r) +
-                                  " unknowns) of the contact Jacobian is singular");
-            }
-        }
-      factorized = true;
-      ++n_dense_factorizations;
-      time_dense_lu += clock.wall_time();
-      return false;
     }
 
     template <int dim>
@@ -215,6 +301,9 @@ namespace porofrac
       offset.clear();
       row_scale.clear();
       S.reinit(0, 0);
+      null_right.clear();
+      null_left.clear();
+      svd_rank   = 0;
       factorized = false;
     }
 
@@ -257,8 +346,34 @@ namespace porofrac
                    rows_l[f][i][k] * x(dim * f + k);
             t(offset[f] + r) = b * row_scale[offset[f] + r];
           }
-      if (m_r > 0)
-        S.solve(t);
+      if (m_r > 0 && svd_rank > 0)
+        {
+          // t = V diag(1/s_i, i < rank) U^T t
+          const LAPACKFullMatrix<double> &U = S.get_svd_u(), &Vt = S.get_svd_vt();
+          Vector<double>                  c(svd_rank);
+          for (unsigned int i = 0; i < svd_rank; ++i)
+            {
+              double s = 0;
+              for (unsigned int r = 0; r < m_r; ++r)
+                s += U(r, i) * t(r);
+              c(i) = s / S.singular_value(i);
+            }
+          for (unsigned int r = 0; r < m_r; ++r)
+            {
+              double s = 0;
+              for (unsigned int i = 0; i < svd_rank; ++i)
+                s += Vt(i, r) * c(i);
+              t(r) = s;
+            }
+        }
+      else if (m_r > 0)
+        {
+          for (const Vector<double> &l : null_left)
+            t.add(-(t * l), l);
+          S.solve(t);
+          for (const Vector<double> &v : null_right)
+            t.add(-(t * v), v);
+        }
       for (unsigned int f = 0; f < n_f; ++f)
         for (unsigned int k = 0; k < dim; ++k)
           {

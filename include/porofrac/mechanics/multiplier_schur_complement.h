@@ -101,6 +101,22 @@ namespace porofrac
       LAPACKFullMatrix<double> S;
       std::vector<double>      row_scale;
       bool                     factorized = false;
+      /// Orthonormal bases of the right and left null spaces of a numerically singular S
+      /// (empty when S is regular).
+      std::vector<Vector<double>> null_right, null_left;
+      /// Numerical rank when S had an exactly zero pivot and holds its SVD instead (0: LU).
+      unsigned int svd_rank = 0;
+
+      /// Forms the per-face splitting and the equilibrated S of rows_l, rows_j.
+      void
+      assemble_reduced();
+      /// @p n null vectors of the LU-factorized S (of S^T if @p transposed).
+      std::vector<Vector<double>>
+      null_space(const unsigned int n, const bool transposed) const;
+
+    public:
+      /// Dense factorizations whose S was numerically singular (minimum-norm steps) so far.
+      unsigned int n_deflated_factorizations = 0;
     };
   } // namespace mechanics
 } // namespace porofrac
