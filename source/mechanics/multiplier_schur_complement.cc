@@ -116,7 +116,6 @@ namespace porofrac
                   throw SolverFailure("the multiplier Schur complement (" + std::to_string(m_r) +
                                       " unknowns) of the contact Jacobian is zero");
                 }
-              ++n_deflated_factorizations;
               factorized = true;
               ++n_dense_factorizations;
               time_dense_lu += clock.wall_time();
@@ -132,7 +131,6 @@ namespace porofrac
             {
               null_right = null_space(rank_deficit, false);
               null_left  = null_space(rank_deficit, true);
-              ++n_deflated_factorizations;
             }
         }
       factorized = true;

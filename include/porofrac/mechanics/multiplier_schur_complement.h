@@ -113,10 +113,6 @@ namespace porofrac
       /// @p n null vectors of the LU-factorized S (of S^T if @p transposed).
       std::vector<Vector<double>>
       null_space(const unsigned int n, const bool transposed) const;
-
-    public:
-      /// Dense factorizations whose S was numerically singular (minimum-norm steps) so far.
-      unsigned int n_deflated_factorizations = 0;
     };
   } // namespace mechanics
 } // namespace porofrac
