@@ -26,6 +26,10 @@ namespace porofrac
         context.report << "Mechanics: Schur complement unavailable (the elasticity block alone "
                           "is singular); the full system was solved"
                        << std::endl;
+      if (solution.statistics.direct_fallbacks > 0)
+        context.report << "Mechanics: " << solution.statistics.direct_fallbacks
+                       << " linear solves fell back from the Krylov solver to the direct solver"
+                       << std::endl;
       const auto counts = mechanics::count_states(mesh, solution.faces);
       context.report << "Mechanics: faces open " << counts[0] << ", stick " << counts[1]
                      << ", slip " << counts[2] << std::endl;
