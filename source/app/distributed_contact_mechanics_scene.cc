@@ -35,7 +35,9 @@ namespace porofrac
                                                                     parameters.mechanics,
                                                                     context.progress,
                                                                     context.timer);
-          serial->setup(postprocessors_need_system_matrices<dim>(parameters));
+          serial->setup(postprocessors_need_system_matrices<dim>(parameters) ?
+                          mechanics::SystemAssembly::matrices :
+                          mechanics::SystemAssembly::state);
         });
         const Vector<double> u =
           problem.gather_displacement(serial ? &serial->get_dof_handler() : nullptr);

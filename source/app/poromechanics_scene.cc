@@ -316,7 +316,9 @@ namespace porofrac
         if (context.communicator != MPI_COMM_SELF)
           flow.solver->distribute(context.communicator, flow.grid->node_owners(cell_owner));
         context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
-        mech.setup();
+        // With the distributed contact problem the serial one only holds its state: no K.
+        mech.setup(distributed_mech ? mechanics::SystemAssembly::loads :
+                                      mechanics::SystemAssembly::matrices);
         if (distributed_mech)
           distributed_mech->setup();
         context.summary["n_dofs_mechanics"] = mech.n_dofs();

@@ -21,9 +21,9 @@ namespace porofrac
 
     template <int dim>
     void
-    ContactProblem<dim>::setup(const bool assemble_matrices)
+    ContactProblem<dim>::setup(const SystemAssembly what)
     {
-      system.setup(assemble_matrices);
+      system.setup(what);
       solver.clear();
       friction_field.initialize(system.get_mesh(), prm);
       u.reinit(system.n_displacement_dofs());

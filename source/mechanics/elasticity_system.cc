@@ -62,15 +62,21 @@ namespace porofrac
 
     template <int dim>
     void
-    ElasticitySystem<dim>::setup(const bool assemble_matrices)
+    ElasticitySystem<dim>::setup(const SystemAssembly what)
     {
       TimerOutput::Scope t(timer, "Mechanics: setup");
       dof_handler.distribute_dofs(fe);
       make_constraints();
-      matrices_assembled = assemble_matrices;
-      if (!assemble_matrices)
+      matrices_assembled = what == SystemAssembly::matrices;
+      if (!matrices_assembled)
         {
           make_coupling(nullptr);
+          if (what == SystemAssembly::loads)
+            {
+              f.reinit(dof_handler.n_dofs());
+              f_fixed.reinit(dof_handler.n_dofs());
+              assemble();
+            }
           return;
         }
       const unsigned int                   N = n_dofs();
@@ -171,9 +177,12 @@ namespace porofrac
       TimerOutput::Scope   t(timer, "Mechanics: assembly");
       const DeckLoads<dim> loads(prm, mesh);
       CellScratch<dim>     scratch(mesh.mapping(), fe);
-      K_full      = 0;
-      base_matrix = 0;
-      f           = 0;
+      if (matrices_assembled)
+        {
+          K_full      = 0;
+          base_matrix = 0;
+        }
+      f = 0;
       divergence.assign(mesh.triangulation.n_active_cells(), {});
       cell_measures.assign(mesh.triangulation.n_active_cells(), 0.);
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -183,7 +192,13 @@ namespace porofrac
           assemble_cell_boundary(prm, fe, cell, loads, scratch);
           cell_measures[cell->active_cell_index()] = scratch.cell_measure;
           cell->get_dof_indices(scratch.local);
-          K_full.add(scratch.local, scratch.matrix);
+          if (matrices_assembled)
+            {
+              K_full.add(scratch.local, scratch.matrix);
+              constraints_hom.distribute_local_to_global(scratch.matrix,
+                                                         scratch.local,
+                                                         base_matrix);
+            }
           for (unsigned int i = 0; i < scratch.local.size(); ++i)
             {
               f(scratch.local[i]) += scratch.rhs(i);
@@ -191,14 +206,14 @@ namespace porofrac
                 divergence[cell->active_cell_index()].emplace_back(scratch.local[i],
                                                                    scratch.div_integral(i));
             }
-          constraints_hom.distribute_local_to_global(scratch.matrix, scratch.local, base_matrix);
         }
       add_fracture_pressure(loads);
       check_input(std::isfinite(f.l2_norm()),
                   "Mechanics",
                   "the loads (body force, tractions, pressures, pre-stress) are not finite");
       f_fixed = f;
-      add_coupling_to_matrix();
+      if (matrices_assembled)
+        add_coupling_to_matrix();
     }
 
 
@@ -281,6 +296,11 @@ namespace porofrac
     void
     ElasticitySystem<dim>::apply_elasticity(const Vector<double> &u, Vector<double> &Ku) const
     {
+      if (!matrices_assembled)
+        {
+          apply_elasticity_by_cells(u, Ku);
+          return;
+        }
       // K_full lives on the saddle-point pattern but has entries in the displacement block only.
       Vector<double> x(n_dofs()), y(n_dofs());
       for (unsigned int i = 0; i < u.size(); ++i)
@@ -289,6 +309,31 @@ namespace porofrac
       Ku.reinit(u.size());
       for (unsigned int i = 0; i < u.size(); ++i)
         Ku(i) = y(i);
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::apply_elasticity_by_cells(const Vector<double> &u,
+                                                     Vector<double>       &Ku) const
+    {
+      TimerOutput::Scope   t(timer, "Mechanics: K u by cells");
+      const DeckLoads<dim> loads(prm, mesh);
+      CellScratch<dim>     scratch(mesh.mapping(), fe);
+      Vector<double>       u_local(fe.n_dofs_per_cell()), Ku_local(fe.n_dofs_per_cell());
+      Ku.reinit(u.size());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          scratch.clear();
+          assemble_cell_volume(prm, fe, cell, loads, scratch);
+          cell->get_dof_indices(scratch.local);
+          for (unsigned int i = 0; i < scratch.local.size(); ++i)
+            u_local(i) = u(scratch.local[i]);
+          scratch.matrix.vmult(Ku_local, u_local);
+          for (unsigned int i = 0; i < scratch.local.size(); ++i)
+            Ku(scratch.local[i]) += Ku_local(i);
+        }
     }
 
 

@@ -39,10 +39,10 @@ namespace porofrac
                      TimerOutput                  &timer);
 
       /// Dofs, constraints, elasticity block and coupling (assembled once), friction field.
-      /// Without @p assemble_matrices the problem can hold and report a state (set_state())
-      /// but not solve: for postprocessing a solution computed by the distributed code.
+      /// With less than SystemAssembly::matrices the problem can hold and report a state
+      /// (set_state()) but not solve: for a solution computed by the distributed code.
       void
-      setup(bool assemble_matrices = true);
+      setup(SystemAssembly what = SystemAssembly::matrices);
 
       /**
        * Solves the contact problem (ContactSolver::solve) from the current (u, lambda) if

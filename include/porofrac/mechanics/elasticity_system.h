@@ -34,6 +34,20 @@ namespace porofrac
       std::vector<Tensor<2, dim>> jump;
     };
 
+    /// What ElasticitySystem::setup() assembles:
+    /// - state: dofs, constraints and B, enough to read a state computed elsewhere (jumps,
+    ///   fields, reconstructions);
+    /// - loads: also the loads and the per-cell divergences, what the poromechanical coupling
+    ///   reads of a state computed by the distributed code (K u and the elastic energy are then
+    ///   computed cell by cell);
+    /// - matrices: also the saddle-point pattern and K, what a solve needs.
+    enum class SystemAssembly
+    {
+      state,
+      loads,
+      matrices
+    };
+
     template <int dim>
     struct DeckLoads;
 
@@ -72,13 +86,11 @@ namespace porofrac
                        const ContactParameters      &parameters,
                        TimerOutput                  &timer);
 
-      /// Dofs, constraints, the saddle-point pattern, B, K and the fixed loads; without
-      /// @p assemble_matrices only dofs, constraints and B (enough to read a state: jumps,
-      /// fields, reconstructions; postprocessing of a solution computed elsewhere).
+      /// Dofs, constraints, B and, as @p what says, the loads and K.
       void
-      setup(bool assemble_matrices = true);
+      setup(SystemAssembly what = SystemAssembly::matrices);
 
-      /// Whether setup() assembled the pattern, K and the loads.
+      /// Whether setup() assembled the pattern and K.
       bool
       has_matrices() const
       {
@@ -179,9 +191,12 @@ namespace porofrac
       void
       initial_displacement(Vector<double> &u) const;
 
-      /// K u, K unconstrained.
+      /// K u, K unconstrained (cell by cell when setup() assembled no matrices).
       void
       apply_elasticity(const Vector<double> &u, Vector<double> &Ku) const;
+      /// K u from the cell matrices, assembled again (no stored K).
+      void
+      apply_elasticity_by_cells(const Vector<double> &u, Vector<double> &Ku) const;
       /// y = J x for the Jacobian with face rows @p rows: K x_u + B^T x_lambda on the
       /// displacement rows (constrained rows as in the Jacobian), A_l R x_lambda + A_j R [x_u]
       /// on the face rows.
