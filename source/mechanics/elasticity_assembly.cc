@@ -230,6 +230,42 @@ namespace porofrac
 
 
     template <int dim>
+    double
+    cell_elastic_energy(const ContactParameters                              &prm,
+                        const FESystem<dim>                                  &fe,
+                        const typename DoFHandler<dim>::active_cell_iterator &cell,
+                        const Vector<double>                                 &u_local,
+                        CellScratch<dim>                                     &scratch)
+    {
+      // The quadratic form of assemble_cell_volume: 2 mu (eps_i:eps_j + hoop_i hoop_j) +
+      // lambda div_i div_j.
+      const auto [mu, lam] = lame_coefficients(prm.young_modulus, prm.poisson_ratio);
+      const FEValuesExtractors::Vector disp(0);
+      const bool                       axi       = prm.axisymmetric;
+      auto                            &fe_values = scratch.fe_values;
+      fe_values.reinit(cell);
+      double energy = 0;
+      for (unsigned int q = 0; q < scratch.quadrature.size(); ++q)
+        {
+          const Point<dim>       &x = fe_values.quadrature_point(q);
+          SymmetricTensor<2, dim> eps;
+          double                  hoop = 0;
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              eps += u_local(i) * fe_values[disp].symmetric_gradient(i, q);
+              if (axi && fe.system_to_component_index(i).first == 1)
+                hoop += u_local(i) * fe_values.shape_value(i, q) / x[1];
+            }
+          const double div = trace(eps) + hoop;
+          energy += (mu * (eps * eps + hoop * hoop) + 0.5 * lam * div * div) *
+                    measure_weight(axi, x) * fe_values.JxW(q);
+        }
+      return energy;
+    }
+
+
+
+    template <int dim>
     void
     assemble_cell_boundary(const ContactParameters                              &prm,
                            const FESystem<dim>                                  &fe,
@@ -364,6 +400,11 @@ namespace porofrac
 #define POROFRAC_INSTANTIATE(dim)                                                                 \
   template struct DeckLoads<dim>;                                                                 \
   template struct CellScratch<dim>;                                                               \
+  template double cell_elastic_energy(const ContactParameters &,                                  \
+                                      const FESystem<dim> &,                                      \
+                                      const typename DoFHandler<dim>::active_cell_iterator &,     \
+                                      const Vector<double> &,                                     \
+                                      CellScratch<dim> &);                                        \
   template void   assemble_cell_volume(const ContactParameters &,                                 \
                                        const FESystem<dim> &,                                     \
                                        const typename DoFHandler<dim>::active_cell_iterator &,    \

@@ -296,11 +296,8 @@ namespace porofrac
     void
     ElasticitySystem<dim>::apply_elasticity(const Vector<double> &u, Vector<double> &Ku) const
     {
-      if (!matrices_assembled)
-        {
-          apply_elasticity_by_cells(u, Ku);
-          return;
-        }
+      AssertThrow(matrices_assembled,
+                  ExcMessage("ElasticitySystem: K u needs setup() with the matrices"));
       // K_full lives on the saddle-point pattern but has entries in the displacement block only.
       Vector<double> x(n_dofs()), y(n_dofs());
       for (unsigned int i = 0; i < u.size(); ++i)
@@ -314,26 +311,21 @@ namespace porofrac
 
 
     template <int dim>
-    void
-    ElasticitySystem<dim>::apply_elasticity_by_cells(const Vector<double> &u,
-                                                     Vector<double>       &Ku) const
+    double
+    ElasticitySystem<dim>::elastic_energy_by_cells(const Vector<double> &u) const
     {
-      TimerOutput::Scope   t(timer, "Mechanics: K u by cells");
-      const DeckLoads<dim> loads(prm, mesh);
-      CellScratch<dim>     scratch(mesh.mapping(), fe);
-      Vector<double>       u_local(fe.n_dofs_per_cell()), Ku_local(fe.n_dofs_per_cell());
-      Ku.reinit(u.size());
+      TimerOutput::Scope t(timer, "Mechanics: elastic energy by cells");
+      CellScratch<dim>   scratch(mesh.mapping(), fe);
+      Vector<double>     u_local(fe.n_dofs_per_cell());
+      double             energy = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
         {
-          scratch.clear();
-          assemble_cell_volume(prm, fe, cell, loads, scratch);
           cell->get_dof_indices(scratch.local);
           for (unsigned int i = 0; i < scratch.local.size(); ++i)
             u_local(i) = u(scratch.local[i]);
-          scratch.matrix.vmult(Ku_local, u_local);
-          for (unsigned int i = 0; i < scratch.local.size(); ++i)
-            Ku(scratch.local[i]) += Ku_local(i);
+          energy += cell_elastic_energy(prm, fe, cell, u_local, scratch);
         }
+      return energy;
     }
 
 
@@ -395,6 +387,8 @@ namespace porofrac
     double
     ElasticitySystem<dim>::elastic_energy(const Vector<double> &u) const
     {
+      if (!matrices_assembled)
+        return elastic_energy_by_cells(u);
       Vector<double> Ku;
       apply_elasticity(u, Ku);
       return 0.5 * (u * Ku);

@@ -246,8 +246,9 @@ namespace porofrac
       AffineConstraints<double> constraints, constraints_hom;
 
       /// K with the homogeneous constraints applied, and K - K_constrained (nonzero only on the
-      /// cells with constrained dofs): K u = K_constrained u + K_boundary u, without a second
-      /// copy of K.
+      /// cells with constrained dofs): K u = K_constrained u + K_boundary u on the unconstrained
+      /// rows, without a second copy of K. Not on the constrained rows: the diagonal entries
+      /// the constraints put there do not cancel, so u^T K u cannot be formed from the two.
       TrilinosWrappers::SparseMatrix K_constrained, K_boundary;
       TrilinosWrappers::SparseMatrix coupling, coupling_free, coupling_free_T;
       VectorType                     f;

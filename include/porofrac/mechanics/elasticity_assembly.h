@@ -102,6 +102,16 @@ namespace porofrac
       Vector<double>                       value;
     };
 
+    /// 1/2 u_K^T A_K u_K of one cell without forming A_K: the integral of
+    /// mu (eps:eps + eps_hoop^2) + lambda/2 div^2 of the cell's displacement @p u_local.
+    template <int dim>
+    double
+    cell_elastic_energy(const ContactParameters                              &prm,
+                        const FESystem<dim>                                  &fe,
+                        const typename DoFHandler<dim>::active_cell_iterator &cell,
+                        const Vector<double>                                 &u_local,
+                        CellScratch<dim>                                     &scratch);
+
     /// Elasticity matrix, body force, pre-stress, int_K div phi_i and the weighted |K| of one
     /// cell, added to @p scratch.
     template <int dim>

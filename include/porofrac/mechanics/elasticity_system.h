@@ -38,8 +38,8 @@ namespace porofrac
     /// - state: dofs, constraints and B, enough to read a state computed elsewhere (jumps,
     ///   fields, reconstructions);
     /// - loads: also the loads and the per-cell divergences, what the poromechanical coupling
-    ///   reads of a state computed by the distributed code (K u and the elastic energy are then
-    ///   computed cell by cell);
+    ///   reads of a state computed by the distributed code (its elastic energy is then computed
+    ///   cell by cell);
     /// - matrices: also the saddle-point pattern and K, what a solve needs.
     enum class SystemAssembly
     {
@@ -191,12 +191,12 @@ namespace porofrac
       void
       initial_displacement(Vector<double> &u) const;
 
-      /// K u, K unconstrained (cell by cell when setup() assembled no matrices).
+      /// K u, K unconstrained (needs setup() with the matrices).
       void
       apply_elasticity(const Vector<double> &u, Vector<double> &Ku) const;
-      /// K u from the cell matrices, assembled again (no stored K).
-      void
-      apply_elasticity_by_cells(const Vector<double> &u, Vector<double> &Ku) const;
+      /// 1/2 u^T K u cell by cell, without K (setup() without the matrices).
+      double
+      elastic_energy_by_cells(const Vector<double> &u) const;
       /// y = J x for the Jacobian with face rows @p rows: K x_u + B^T x_lambda on the
       /// displacement rows (constrained rows as in the Jacobian), A_l R x_lambda + A_j R [x_u]
       /// on the face rows.
