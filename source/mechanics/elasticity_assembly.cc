@@ -77,6 +77,21 @@ namespace porofrac
           }
         return hits;
       }
+
+      /// The hoop strain phi_i,r / r of shape function @p i at quadrature point @p q in the
+      /// axisymmetric case (r = x[1], radial component 1), else 0.
+      template <int dim>
+      double
+      shape_hoop_strain(const FESystem<dim> &fe,
+                        const FEValues<dim> &fe_values,
+                        const bool           axisymmetric,
+                        const unsigned int   i,
+                        const unsigned int   q)
+      {
+        if (!axisymmetric || fe.system_to_component_index(i).first != 1)
+          return 0.;
+        return fe_values.shape_value(i, q) / fe_values.quadrature_point(q)[1];
+      }
     } // namespace
 
 
@@ -201,9 +216,7 @@ namespace porofrac
           for (unsigned int i = 0; i < n; ++i)
             {
               eps[i]      = fe_values[disp].symmetric_gradient(i, q);
-              eps_hoop[i] = (axi && fe.system_to_component_index(i).first == 1) ?
-                              fe_values.shape_value(i, q) / x[1] :
-                              0.;
+              eps_hoop[i] = shape_hoop_strain(fe, fe_values, axi, i, q);
               div[i]      = trace(eps[i]) + eps_hoop[i];
             }
           if (loads.body)
@@ -213,8 +226,9 @@ namespace porofrac
               const SymmetricTensor<2, dim> s_i =
                 2 * mu * eps[i] + lam * div[i] * unit_symmetric_tensor<dim>();
               const double s_i_hoop = 2 * mu * eps_hoop[i] + lam * div[i];
-              for (unsigned int j = 0; j < n; ++j)
-                scratch.matrix(i, j) += (s_i * eps[j] + s_i_hoop * eps_hoop[j]) * JxW;
+              if (scratch.with_matrix)
+                for (unsigned int j = 0; j < n; ++j)
+                  scratch.matrix(i, j) += (s_i * eps[j] + s_i_hoop * eps_hoop[j]) * JxW;
               double r = -(loads.sigma0 * eps[i]) - prm.pre_stress_hoop * eps_hoop[i];
               if (loads.body)
                 {
@@ -253,8 +267,7 @@ namespace porofrac
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             {
               eps += u_local(i) * fe_values[disp].symmetric_gradient(i, q);
-              if (axi && fe.system_to_component_index(i).first == 1)
-                hoop += u_local(i) * fe_values.shape_value(i, q) / x[1];
+              hoop += u_local(i) * shape_hoop_strain(fe, fe_values, axi, i, q);
             }
           const double div = trace(eps) + hoop;
           energy += (mu * (eps * eps + hoop * hoop) + 0.5 * lam * div * div) *

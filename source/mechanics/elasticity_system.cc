@@ -177,6 +177,7 @@ namespace porofrac
       TimerOutput::Scope   t(timer, "Mechanics: assembly");
       const DeckLoads<dim> loads(prm, mesh);
       CellScratch<dim>     scratch(mesh.mapping(), fe);
+      scratch.with_matrix = matrices_assembled;
       if (matrices_assembled)
         {
           K_full      = 0;

@@ -89,10 +89,12 @@ namespace porofrac
       void
       clear();
 
-      const QGaussSimplex<dim>             quadrature;
-      const QGaussSimplex<dim - 1>         face_quadrature;
-      FEValues<dim>                        fe_values;
-      FEFaceValues<dim>                    fe_face;
+      const QGaussSimplex<dim>     quadrature;
+      const QGaussSimplex<dim - 1> face_quadrature;
+      FEValues<dim>                fe_values;
+      FEFaceValues<dim>            fe_face;
+      /// Whether assemble_cell_volume forms the cell matrix (not needed for loads only).
+      bool                                 with_matrix = true;
       FullMatrix<double>                   matrix;
       Vector<double>                       rhs, div_integral;
       double                               cell_measure = 0;
