@@ -314,6 +314,11 @@ namespace porofrac
           , pvd(context.path("poromechanics.pvd"))
           , checkpoints(context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"})
       {
+        // The Coulomb conditions of a time step count the slip from the previous step's true
+        // jumps, which the stabilized jumps would not match.
+        check_input(physics.mechanics.multiplier_stabilization == 0,
+                    "Mechanics/Multiplier stabilization",
+                    "is available in contact-mechanics runs only, not in coupled runs");
         // Distributed: the flow's Newton systems are shared, the contact problem is solved by
         // every process or distributed (coupling::Poromechanics).
         if (context.communicator != MPI_COMM_SELF)

@@ -161,7 +161,7 @@ namespace porofrac
       const auto [mechanical, load] = system.mechanical_residual_norms(u, lambda);
       // Contact rows, (25)-(26) scaled to stress units, weighted by |sigma|.
       std::vector<Tensor<1, dim>> jumps;
-      system.face_jumps(u, jumps);
+      system.contact_jumps(u, lambda, jumps);
       double contact = 0, contact_unscaled = 0, lambda2 = 0, c_jump = 0, jump = 0, measure = 0,
              stick_slip = 0;
       for (unsigned int fi = 0; fi < system.n_faces(); ++fi)
@@ -260,7 +260,7 @@ namespace porofrac
       system.mechanical_rhs(u, lambda, rhs);
       // Face rows A_l R lambda + A_j R [u] = r of the contact method, for the increment.
       std::vector<Tensor<1, dim>> jumps;
-      system.face_jumps(u, jumps);
+      system.contact_jumps(u, lambda, jumps);
       for (unsigned int fi = 0; fi < system.n_faces(); ++fi)
         {
           if (!system.owns_face(fi))

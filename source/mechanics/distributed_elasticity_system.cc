@@ -100,6 +100,10 @@ namespace porofrac
         , dof_handler(mesh.triangulation)
     {
       prm.validate(dim);
+      check_input(prm.multiplier_stabilization == 0,
+                  "Mechanics/Multiplier stabilization",
+                  "is available with the serial Schur complement solver only, not in distributed "
+                  "runs (Distributed = always, or more than one process)");
       if (prm.axisymmetric)
         for (const auto &v : mesh.serial.triangulation.get_vertices())
           check_input(v[1] >= 0,

@@ -67,6 +67,7 @@ namespace porofrac
       TimerOutput::Scope t(timer, "Mechanics: setup");
       dof_handler.distribute_dofs(fe);
       make_constraints();
+      stabilization      = make_multiplier_stabilization(mesh, prm);
       matrices_assembled = what == SystemAssembly::matrices;
       if (!matrices_assembled)
         {
@@ -348,6 +349,12 @@ namespace porofrac
           for (const auto &e : coupling[fi])
             if (!constraints_hom.is_constrained(e.dof))
               j[e.component] += e.value * x(e.dof) / m;
+          j -= stabilization_term<dim>(stabilization, fi, [&](const unsigned int g) {
+            Tensor<1, dim> lg;
+            for (unsigned int k = 0; k < dim; ++k)
+              lg[k] = x(n_u + dim * g + k);
+            return lg;
+          });
           const Tensor<1, dim> row = rows.lambda[fi] * l + rows.jump[fi] * j;
           for (unsigned int i = 0; i < dim; ++i)
             y(n_u + dim * fi + i) = row[i];
@@ -439,6 +446,27 @@ namespace porofrac
       jumps.resize(coupling.size());
       for (unsigned int fi = 0; fi < coupling.size(); ++fi)
         jumps[fi] = jump(u, fi);
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticitySystem<dim>::contact_jumps(const Vector<double>        &u,
+                                         const Vector<double>        &lambda,
+                                         std::vector<Tensor<1, dim>> &jumps) const
+    {
+      face_jumps(u, jumps);
+      if (stabilization.empty())
+        return;
+      const auto multiplier = [&](const unsigned int g) {
+        Tensor<1, dim> l;
+        for (unsigned int k = 0; k < dim; ++k)
+          l[k] = lambda(dim * g + k);
+        return l;
+      };
+      for (unsigned int fi = 0; fi < coupling.size(); ++fi)
+        jumps[fi] -= stabilization_term<dim>(stabilization, fi, multiplier);
     }
 
 

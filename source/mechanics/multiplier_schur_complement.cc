@@ -18,7 +18,8 @@ namespace porofrac
       const unsigned int                             n_u,
       const std::vector<std::vector<CouplingEntry>> &coupling,
       const std::vector<double>                     &face_measures,
-      const std::vector<bool>                       &constrained)
+      const std::vector<bool>                       &constrained,
+      const MultiplierStabilization                 &stabilization)
         : n_u(n_u)
         , n_f(coupling.size())
         , entries(coupling.size())
@@ -62,6 +63,13 @@ namespace porofrac
       for (unsigned int i = 0; i < m; ++i)
         for (unsigned int j = 0; j < m; ++j)
           W(i, j) = G(i, j) * measures[j / dim];
+      for (unsigned int f = 0; f < stabilization.size(); ++f)
+        for (const auto &[g, s] : stabilization[f])
+          for (unsigned int k = 0; k < dim; ++k)
+            {
+              W(dim * f + k, dim * f + k) += s;
+              W(dim * f + k, dim * g + k) -= s;
+            }
       time_form_W = clock.wall_time();
     }
 

@@ -140,6 +140,17 @@ namespace porofrac
                         "move it towards `Complementarity parameter c` by `Continuation factor` "
                         "whenever the face states of an iterate equal those of the previous one "
                         "(0: off).");
+      prm.declare_entry(
+        "Multiplier stabilization",
+        "0",
+        Patterns::Double(),
+        "alpha >= 0 of the multiplier stabilization (doc/algorithms.md §2.2): the contact "
+        "conditions read the jump of a face minus sum over its neighbours in the same fracture "
+        "of alpha h / E' (lambda_face - lambda_neighbour), h the mean face size, E' = E / (1 - "
+        "nu^2): the compliance of a face bubble, which makes the face-wise constant multipliers "
+        "stable against P2 on tetrahedra. It leaves multipliers constant on a fracture "
+        "unchanged. 0: off (the paper's method). Only with Linear solver = schur complement, "
+        "one process, in contact-mechanics runs.");
       prm.declare_entry("Continuation factor",
                         "100",
                         Patterns::Double(),
@@ -321,6 +332,7 @@ namespace porofrac
       cycle_damping                    = prm.get_double(p, "Cycle damping");
       c_start                          = prm.get_double(p, "Continuation c start");
       continuation_factor              = prm.get_double(p, "Continuation factor");
+      multiplier_stabilization         = prm.get_double(p, "Multiplier stabilization");
       linear_solver                    = prm.get(p, "Linear solver");
       reuse_iterations                 = prm.get_integer(p, "Reuse factorization iterations");
       distributed_linear_solver        = prm.get(p, "Distributed linear solver");
@@ -417,6 +429,13 @@ namespace porofrac
                   "Mechanics/Linear solver",
                   "'" + linear_solver + "' is not one of " +
                     ContactLinearSolverRegistry<2>::instance().selection());
+      check_input(multiplier_stabilization >= 0 && std::isfinite(multiplier_stabilization),
+                  "Mechanics/Multiplier stabilization",
+                  "must be >= 0");
+      check_input(multiplier_stabilization == 0 || linear_solver == "schur complement",
+                  "Mechanics/Multiplier stabilization",
+                  "needs Mechanics/Linear solver = schur complement (the other solvers do not "
+                  "have the multiplier-multiplier coupling it adds)");
       check_input(DistributedContactLinearSolverRegistry<2>::instance().has(
                     distributed_linear_solver),
                   "Mechanics/Distributed linear solver",

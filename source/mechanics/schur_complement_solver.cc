@@ -32,11 +32,13 @@ namespace porofrac
           std::vector<bool>  constrained(n_u);
           for (unsigned int i = 0; i < n_u; ++i)
             constrained[i] = system.get_homogeneous_constraints().is_constrained(i);
-          schur = std::make_unique<MultiplierSchurComplement<dim>>(system.get_constrained_matrix(),
-                                                                   n_u,
-                                                                   system.get_coupling(),
-                                                                   system.get_face_measures(),
-                                                                   constrained);
+          schur =
+            std::make_unique<MultiplierSchurComplement<dim>>(system.get_constrained_matrix(),
+                                                             n_u,
+                                                             system.get_coupling(),
+                                                             system.get_face_measures(),
+                                                             constrained,
+                                                             system.get_multiplier_stabilization());
           this->stats.time_cholesky = schur->time_cholesky;
           this->stats.time_form_W   = schur->time_form_W;
           progress << "    Schur complement: Cholesky of K (" << n_u << " dofs, "
@@ -106,6 +108,11 @@ namespace porofrac
           }
         catch (const SolverFailure &e)
           {
+            if (parameters.multiplier_stabilization > 0)
+              throw SolverFailure(std::string(e.what()) +
+                                  "; Mechanics/Multiplier stabilization needs the Schur "
+                                  "complement, i.e. Dirichlet conditions that hold the body "
+                                  "without the contact rows");
             progress << "    Schur complement unavailable (" << e.what()
                      << "); solving the full system" << std::endl;
             return std::make_unique<FullSystemSolver<dim>>(system, parameters);

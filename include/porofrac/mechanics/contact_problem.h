@@ -127,12 +127,21 @@ namespace porofrac
       double
       friction(const unsigned int f) const
       {
-        return solver.friction(jump(f), f);
+        return solver.friction(contact_jump(f), f);
+      }
+      /// The jump the contact conditions read: jump(f) minus the multiplier stabilization.
+      Tensor<1, dim>
+      contact_jump(const unsigned int f) const
+      {
+        return jump(f) -
+               stabilization_term<dim>(system.get_multiplier_stabilization(),
+                                       f,
+                                       [this](const unsigned int g) { return multiplier(g); });
       }
       FaceState
       state(const unsigned int f) const
       {
-        return solver.state(jump(f), multiplier(f), f);
+        return solver.state(contact_jump(f), multiplier(f), f);
       }
 
       /// Per active cell: the mean of div u over the cell (weighted in axisymmetric mode).

@@ -183,6 +183,15 @@ namespace porofrac
       /// Face-mean jumps of the owned faces (other entries untouched).
       void
       face_jumps(const VectorType &u, std::vector<Tensor<1, dim>> &jumps) const;
+      /// The jumps the contact conditions read: face_jumps (the multiplier stabilization is
+      /// not available in distributed runs).
+      void
+      contact_jumps(const VectorType &u,
+                    const VectorType &,
+                    std::vector<Tensor<1, dim>> &jumps) const
+      {
+        face_jumps(u, jumps);
+      }
       /// This process's share of the squared norms of f - K u - B^T lambda and of f over the
       /// unconstrained dofs.
       std::pair<double, double>

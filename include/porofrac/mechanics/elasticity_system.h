@@ -15,6 +15,7 @@
 
 #include <porofrac/geometry/cut_mesh.h>
 #include <porofrac/mechanics/coupling_entry.h>
+#include <porofrac/mechanics/multiplier_stabilization.h>
 #include <porofrac/mechanics/parameters.h>
 
 #include <vector>
@@ -198,8 +199,8 @@ namespace porofrac
       double
       elastic_energy_by_cells(const Vector<double> &u) const;
       /// y = J x for the Jacobian with face rows @p rows: K x_u + B^T x_lambda on the
-      /// displacement rows (constrained rows as in the Jacobian), A_l R x_lambda + A_j R [x_u]
-      /// on the face rows.
+      /// displacement rows (constrained rows as in the Jacobian), A_l R x_lambda + A_j R ([x_u]
+      /// - S x_lambda) on the face rows (S: the multiplier stabilization).
       void
       apply_jacobian(const FaceRows<dim> &rows, const Vector<double> &x, Vector<double> &y) const;
       /// Face-mean jump [u]_sigma of eq. (10), global frame.
@@ -246,6 +247,18 @@ namespace porofrac
       /// Face-mean jumps of every face.
       void
       face_jumps(const Vector<double> &u, std::vector<Tensor<1, dim>> &jumps) const;
+      /// The jumps the contact conditions read: [u]_sigma - (S lambda)_sigma with the
+      /// multiplier stabilization S (face_jumps when it is off).
+      void
+      contact_jumps(const Vector<double>        &u,
+                    const Vector<double>        &lambda,
+                    std::vector<Tensor<1, dim>> &jumps) const;
+      /// The multiplier stabilization S (empty when Mechanics/Multiplier stabilization = 0).
+      const MultiplierStabilization &
+      get_multiplier_stabilization() const
+      {
+        return stabilization;
+      }
       /// Squared norms of f - K u - B^T lambda and of f over the unconstrained dofs.
       std::pair<double, double>
       mechanical_residual_norms(const Vector<double> &u, const Vector<double> &lambda) const;
@@ -322,7 +335,8 @@ namespace porofrac
       std::vector<std::vector<CouplingEntry>> coupling;
       /// Per active cell: (dof, int_K div phi_dof) so that int_K div u = sum value * u(dof).
       std::vector<std::vector<std::pair<types::global_dof_index, double>>> divergence;
-      std::vector<double> cell_measures, face_measures;
+      std::vector<double>     cell_measures, face_measures;
+      MultiplierStabilization stabilization;
     };
   } // namespace mechanics
 } // namespace porofrac

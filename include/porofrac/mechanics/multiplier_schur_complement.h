@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/mechanics/coupling_entry.h>
+#include <porofrac/mechanics/multiplier_stabilization.h>
 #include <porofrac/mechanics/sparse_cholesky.h>
 
 #include <memory>
@@ -48,13 +49,16 @@ namespace porofrac
     public:
       /**
        * Factorizes the leading n_u block of @p base_matrix and forms W. Coupling entries on
-       * constrained dofs (@p constrained) are left out, as in the full system.
+       * constrained dofs (@p constrained) are left out, as in the full system. With a
+       * multiplier stabilization S the face rows read A_l dl + A_j ([du] - S dl), so W + S
+       * takes the place of W throughout.
        */
       MultiplierSchurComplement(const SparseMatrix<double>                    &base_matrix,
                                 const unsigned int                             n_u,
                                 const std::vector<std::vector<CouplingEntry>> &coupling,
                                 const std::vector<double>                     &face_measures,
-                                const std::vector<bool>                       &constrained);
+                                const std::vector<bool>                       &constrained,
+                                const MultiplierStabilization                 &stabilization);
 
       /// Sets the face rows A_l R, A_j R; refactorizes the dense Schur complement only if they
       /// changed. Returns true when the previous LU factors were reused.
@@ -89,7 +93,7 @@ namespace porofrac
       std::vector<std::vector<CouplingEntry>> entries; ///< unconstrained coupling entries
       std::vector<double>                     measures;
       SparseCholesky                          K;
-      FullMatrix<double>                      W; ///< J K^{-1} B^T
+      FullMatrix<double>                      W; ///< J K^{-1} B^T + S
       std::vector<Tensor<2, dim>>             rows_l, rows_j;
       /// Per face: rows with a jump term (kept in the dense system) and without (eliminated),
       /// E_f^+ (dim x free rows), the null-space basis N_f of E_f (dim x kept rows), and the

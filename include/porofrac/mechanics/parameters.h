@@ -110,6 +110,11 @@ namespace porofrac
       double c_start             = 0;
       double continuation_factor = 100;
 
+      /// Multiplier stabilization alpha (doc/algorithms.md §2.2; 0: off, the paper's method):
+      /// the contact conditions read the jump [u]_sigma - sum_sigma' s (lambda_sigma -
+      /// lambda_sigma') over the neighbours sigma' of sigma in its fracture, s = alpha h / E'.
+      double multiplier_stabilization = 0;
+
       /// The linear solver of the contact iterations (ContactLinearSolverRegistry).
       std::string linear_solver = "full system";
       /// Full system: GMRES preconditioned by the last LU factors, at most this many
