@@ -175,7 +175,7 @@ namespace porofrac
                  const coupling::EnergyEstimate<dim> &energy,
                  std::ostream                        &report)
       {
-        const coupling::EnergyTerms stored = energy.stored_energy();
+        const coupling::EnergyTerms &stored = energy.last_stored_energy();
         report_states(report, pm.mechanics, "final time");
         report << "Coupling: " << stepper.step_number() << " time steps, " << totals.cuts
                << " time-step cuts, final time " << std::scientific << std::setprecision(4)
@@ -314,11 +314,6 @@ namespace porofrac
           , pvd(context.path("poromechanics.pvd"))
           , checkpoints(context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"})
       {
-        // The Coulomb conditions of a time step count the slip from the previous step's true
-        // jumps, which the stabilized jumps would not match.
-        check_input(physics.mechanics.multiplier_stabilization == 0,
-                    "Mechanics/Multiplier stabilization",
-                    "is available in contact-mechanics runs only, not in coupled runs");
         // Distributed: the flow's Newton systems are shared, the contact problem is solved by
         // every process or distributed (coupling::Poromechanics).
         if (context.communicator != MPI_COMM_SELF)
@@ -530,7 +525,7 @@ namespace porofrac
                                       pm.flow.solver->linear_statistics());
         summary["mass_balance_error_max"]          = totals.mass_error_max;
         summary["energy_inequality_violation_max"] = energy->max_violation();
-        const coupling::EnergyTerms stored         = energy->stored_energy();
+        const coupling::EnergyTerms &stored        = energy->last_stored_energy();
         summary["final_elastic_energy"]            = stored.elastic;
         summary["final_stored_energy"]             = stored.total();
         summary["mean_fracture_width"]             = pm.mean_fracture_width();

@@ -126,6 +126,28 @@ namespace porofrac
                       io::to_text(r_min) + " (move the domain to r >= 0)");
       }
 
+      /// Where Mechanics/Multiplier stabilization is available (doc/algorithms.md §2.2): the
+      /// serial Schur complement solver and the distributed solvers, in contact-mechanics runs.
+      void
+      check_multiplier_stabilization(const mechanics::ContactParameters &mechanics,
+                                     const std::string                  &physics,
+                                     const bool                          distributed)
+      {
+        if (mechanics.multiplier_stabilization == 0)
+          return;
+        const std::string parameter = "Mechanics/Multiplier stabilization";
+        check_input(physics == "contact mechanics",
+                    parameter,
+                    "is available in contact-mechanics runs only, not in coupled runs (the "
+                    "Coulomb conditions of a time step count the slip from the previous step's "
+                    "true jumps)");
+        check_input(distributed || mechanics.linear_solver == "schur complement",
+                    parameter,
+                    "needs Mechanics/Linear solver = schur complement on one process (the "
+                    "full-system solver has no multiplier-multiplier coupling), or a distributed "
+                    "run (Distributed = always)");
+      }
+
       /// Builds and reports the cut mesh, then runs the physics the deck asks for.
       template <int dim>
       void
@@ -156,6 +178,9 @@ namespace porofrac
                         "Flow/Sample lines",
                         "are written by two-phase flow scenes only");
           }
+        check_multiplier_stabilization(physics_parameters.mechanics,
+                                       physics,
+                                       context.communicator != MPI_COMM_SELF);
         const std::string axisymmetric =
           (physics_parameters.mechanics.axisymmetric && physics != "two-phase flow") ?
             "Mechanics/Axisymmetric" :

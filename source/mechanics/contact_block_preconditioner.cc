@@ -54,6 +54,8 @@ namespace porofrac
       Bt.Tmmult(G, Bt, inverse_diagonal);
       const IndexSet        &rows = system.owned_multipliers();
       DynamicSparsityPattern dsp(rows.size(), rows.size(), rows);
+      // The multiplier stabilization (doc/algorithms.md §2.2) adds its S to the face rows.
+      const MultiplierStabilization &S = system.get_multiplier_stabilization();
       for (const unsigned int f : system.get_distributed_mesh().locally_owned_faces())
         for (unsigned int k = 0; k < dim; ++k)
           {
@@ -62,7 +64,11 @@ namespace porofrac
                 dsp.add(dim * f + i, column);
             });
             for (unsigned int i = 0; i < dim; ++i)
-              dsp.add(dim * f + i, dim * f + k);
+              {
+                dsp.add(dim * f + i, dim * f + k);
+                for (unsigned int n = 0; !S.empty() && n < S[f].size(); ++n)
+                  dsp.add(dim * f + i, dim * S[f][n].first + k);
+              }
           }
       schur.reinit(rows, rows, dsp, comm);
       r_u.reinit(system.owned_displacements(), comm);
@@ -148,6 +154,13 @@ namespace porofrac
                                        });
                 }
             }
+          for_stabilization_entries<dim>(
+            system.get_multiplier_stabilization(),
+            f,
+            rows.jump[f],
+            [&](const unsigned int i, const unsigned int g, const unsigned int k, const double v) {
+              schur.add(dim * f + i, dim * g + k, v);
+            });
         }
       schur.compress(VectorOperation::add);
       schur_lu.factorize(schur);

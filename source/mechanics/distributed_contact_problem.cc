@@ -132,8 +132,9 @@ namespace porofrac
     {
       // Per owned face: index, jump and multiplier (local frame), state, friction.
       using Row = std::pair<unsigned int, std::array<double, 2 * dim + 2>>;
-      std::vector<Tensor<1, dim>> jumps;
+      std::vector<Tensor<1, dim>> jumps, contact_jumps;
       system.face_jumps(u, jumps);
+      system.contact_jumps(u, lambda, contact_jumps);
       std::vector<Row> rows;
       for (const unsigned int f : system.get_distributed_mesh().locally_owned_faces())
         {
@@ -148,8 +149,8 @@ namespace porofrac
               row.second[d]       = j[d];
               row.second[dim + d] = lr[d];
             }
-          row.second[2 * dim]     = static_cast<double>(solver.state(jumps[f], l, f));
-          row.second[2 * dim + 1] = solver.friction(jumps[f], f);
+          row.second[2 * dim]     = static_cast<double>(solver.state(contact_jumps[f], l, f));
+          row.second[2 * dim + 1] = solver.friction(contact_jumps[f], f);
           rows.push_back(row);
         }
       const auto all = Utilities::MPI::gather(system.get_communicator(), rows, 0);

@@ -100,10 +100,6 @@ namespace porofrac
         , dof_handler(mesh.triangulation)
     {
       prm.validate(dim);
-      check_input(prm.multiplier_stabilization == 0,
-                  "Mechanics/Multiplier stabilization",
-                  "is available with the serial Schur complement solver only, not in distributed "
-                  "runs (Distributed = always, or more than one process)");
       if (prm.axisymmetric)
         for (const auto &v : mesh.serial.triangulation.get_vertices())
           check_input(v[1] >= 0,
@@ -126,6 +122,13 @@ namespace porofrac
       for (const unsigned int f : mesh.locally_owned_faces())
         owned_lambda.add_range(dim * f, dim * (f + 1));
       owned_lambda.compress();
+      stabilization   = make_multiplier_stabilization(mesh.serial, prm);
+      relevant_lambda = owned_lambda;
+      for (const unsigned int f : mesh.locally_owned_faces())
+        for (unsigned int n = 0; !stabilization.empty() && n < stabilization[f].size(); ++n)
+          relevant_lambda.add_range(dim * stabilization[f][n].first,
+                                    dim * (stabilization[f][n].first + 1));
+      relevant_lambda.compress();
       owned_all = IndexSet(n_dofs());
       owned_all.add_indices(owned_u);
       owned_all.add_indices(owned_lambda, dof_handler.n_dofs());
@@ -356,6 +359,29 @@ namespace porofrac
     {
       u.reinit(owned_u, get_communicator());
       constraints.distribute(u);
+    }
+
+
+
+    template <int dim>
+    void
+    DistributedElasticitySystem<dim>::contact_jumps(const VectorType            &u,
+                                                    const VectorType            &lambda,
+                                                    std::vector<Tensor<1, dim>> &jumps) const
+    {
+      face_jumps(u, jumps);
+      if (stabilization.empty())
+        return;
+      VectorType neighbours(owned_lambda, relevant_lambda, get_communicator());
+      neighbours            = lambda;
+      const auto multiplier = [&](const unsigned int g) {
+        Tensor<1, dim> l;
+        for (unsigned int k = 0; k < dim; ++k)
+          l[k] = neighbours(dim * g + k);
+        return l;
+      };
+      for (const unsigned int f : mesh.locally_owned_faces())
+        jumps[f] -= stabilization_term<dim>(stabilization, f, multiplier);
     }
 
 

@@ -38,10 +38,16 @@ namespace porofrac
         for (unsigned int i = 0; i < dim; ++i)
           dsp.add(offset + dim * (r / dim) + i, c);
       });
+      // ... and, with the multiplier stabilization, to the multipliers of its neighbours.
+      const MultiplierStabilization &S = system.get_multiplier_stabilization();
       for (const unsigned int f : system.get_distributed_mesh().locally_owned_faces())
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
-            dsp.add(offset + dim * f + i, n_u + dim * f + j);
+            {
+              dsp.add(offset + dim * f + i, n_u + dim * f + j);
+              for (unsigned int n = 0; !S.empty() && n < S[f].size(); ++n)
+                dsp.add(offset + dim * f + i, n_u + dim * S[f][n].first + j);
+            }
       if (!whole)
         {
           matrix_.reinit(rows, system.owned_unknowns(), dsp, comm);
@@ -80,6 +86,13 @@ namespace porofrac
           for (const CouplingEntry &e : coupling[f])
             visit(i, e.dof, rows.jump[f][i][e.component] * e.value / m);
         }
+      for_stabilization_entries<dim>(system.get_multiplier_stabilization(),
+                                     f,
+                                     rows.jump[f],
+                                     [&](const unsigned int i,
+                                         const unsigned int g,
+                                         const unsigned int k,
+                                         const double       v) { visit(i, n_u + dim * g + k, v); });
     }
 
 

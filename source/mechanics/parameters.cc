@@ -149,8 +149,9 @@ namespace porofrac
         "of alpha h / E' (lambda_face - lambda_neighbour), h the mean face size, E' = E / (1 - "
         "nu^2): the compliance of a face bubble, which makes the face-wise constant multipliers "
         "stable against P2 on tetrahedra. It leaves multipliers constant on a fracture "
-        "unchanged. 0: off (the paper's method). Only with Linear solver = schur complement, "
-        "one process, in contact-mechanics runs.");
+        "unchanged. 0: off (the paper's method). Contact-mechanics runs only; on one process "
+        "with Linear solver = schur complement, or distributed (any Distributed linear "
+        "solver).");
       prm.declare_entry("Continuation factor",
                         "100",
                         Patterns::Double(),
@@ -432,10 +433,6 @@ namespace porofrac
       check_input(multiplier_stabilization >= 0 && std::isfinite(multiplier_stabilization),
                   "Mechanics/Multiplier stabilization",
                   "must be >= 0");
-      check_input(multiplier_stabilization == 0 || linear_solver == "schur complement",
-                  "Mechanics/Multiplier stabilization",
-                  "needs Mechanics/Linear solver = schur complement (the other solvers do not "
-                  "have the multiplier-multiplier coupling it adds)");
       check_input(DistributedContactLinearSolverRegistry<2>::instance().has(
                     distributed_linear_solver),
                   "Mechanics/Distributed linear solver",

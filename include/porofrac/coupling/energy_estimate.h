@@ -75,6 +75,14 @@ namespace porofrac
       void
       load(io::CheckpointReader &checkpoint);
 
+      /// The stored energy of the last recorded step (of the initial state before the first):
+      /// the state a run ends in, also after a failed step was rolled back.
+      const EnergyTerms &
+      last_stored_energy() const
+      {
+        return previous;
+      }
+
       /// Largest violation recorded.
       double
       max_violation() const

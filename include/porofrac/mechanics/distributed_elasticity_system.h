@@ -14,6 +14,7 @@
 
 #include <porofrac/geometry/distributed_cut_mesh.h>
 #include <porofrac/mechanics/elasticity_system.h>
+#include <porofrac/mechanics/multiplier_stabilization.h>
 #include <porofrac/mechanics/parameters.h>
 
 #include <string>
@@ -183,14 +184,17 @@ namespace porofrac
       /// Face-mean jumps of the owned faces (other entries untouched).
       void
       face_jumps(const VectorType &u, std::vector<Tensor<1, dim>> &jumps) const;
-      /// The jumps the contact conditions read: face_jumps (the multiplier stabilization is
-      /// not available in distributed runs).
+      /// The jumps the contact conditions read on the owned faces: [u]_sigma - (S lambda)_sigma
+      /// with the multiplier stabilization S (face_jumps when it is off).
       void
-      contact_jumps(const VectorType &u,
-                    const VectorType &,
-                    std::vector<Tensor<1, dim>> &jumps) const
+      contact_jumps(const VectorType            &u,
+                    const VectorType            &lambda,
+                    std::vector<Tensor<1, dim>> &jumps) const;
+      /// The multiplier stabilization S (empty when Mechanics/Multiplier stabilization = 0).
+      const MultiplierStabilization &
+      get_multiplier_stabilization() const
       {
-        face_jumps(u, jumps);
+        return stabilization;
       }
       /// This process's share of the squared norms of f - K u - B^T lambda and of f over the
       /// unconstrained dofs.
@@ -249,9 +253,12 @@ namespace porofrac
       const ContactParameters                 &prm;
       TimerOutput                             &timer;
 
-      FESystem<dim>             fe;
-      DoFHandler<dim>           dof_handler;
-      IndexSet                  owned_u, relevant_u, owned_lambda, owned_all;
+      FESystem<dim>           fe;
+      DoFHandler<dim>         dof_handler;
+      IndexSet                owned_u, relevant_u, owned_lambda, owned_all;
+      MultiplierStabilization stabilization;
+      /// The owned multipliers and those of the owned faces' neighbours through S.
+      IndexSet                  relevant_lambda;
       AffineConstraints<double> constraints, constraints_hom;
 
       /// K with the homogeneous constraints applied, and K - K_constrained (nonzero only on the

@@ -54,6 +54,34 @@ namespace porofrac
         t += s * (own - lambda(g));
       return t;
     }
+
+    /**
+     * The Jacobian entries the stabilization adds to the face rows A_l lambda + A_j ([u] -
+     * S lambda) of face @p f, with @p A_j the rows' jump part (global frame): visit(i, g, k,
+     * value) for row i and multiplier component k of face g, -A_j[i][k] sum_g' s_fg' on f
+     * itself and A_j[i][k] s_fg on each neighbour g.
+     */
+    template <int dim, typename Visit>
+    void
+    for_stabilization_entries(const MultiplierStabilization &S,
+                              const unsigned int             f,
+                              const Tensor<2, dim>          &A_j,
+                              const Visit                   &visit)
+    {
+      if (S.empty() || S[f].empty())
+        return;
+      double total = 0;
+      for (const auto &neighbour : S[f])
+        total += neighbour.second;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int k = 0; k < dim; ++k)
+          if (A_j[i][k] != 0)
+            {
+              visit(i, f, k, -A_j[i][k] * total);
+              for (const auto &[g, s] : S[f])
+                visit(i, g, k, A_j[i][k] * s);
+            }
+    }
   } // namespace mechanics
 } // namespace porofrac
 
