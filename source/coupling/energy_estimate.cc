@@ -43,7 +43,7 @@ namespace porofrac
           e.capillary_fracture +=
             grid.pore_volume(i) * flow.rocks[flow::fracture_rock].saturation->energy(pc);
         }
-      e.elastic = problem.mechanics.elastic_energy();
+      e.elastic = problem.elastic_energy();
       return e;
     }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/contact_problem.h>
+#include <porofrac/mechanics/coupling_entry.h>
 
 namespace porofrac
 {
@@ -96,10 +97,7 @@ namespace porofrac
     Tensor<1, dim>
     ContactProblem<dim>::multiplier(const unsigned int f) const
     {
-      Tensor<1, dim> l;
-      for (unsigned int d = 0; d < dim; ++d)
-        l[d] = lambda(dim * f + d);
-      return l;
+      return face_multiplier<dim>(lambda, f);
     }
 
 

@@ -4,6 +4,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/interrupt.h>
 #include <porofrac/mechanics/contact_solver.h>
+#include <porofrac/mechanics/coupling_entry.h>
 #include <porofrac/mechanics/distributed_elasticity_system.h>
 
 #include <cmath>
@@ -98,19 +99,6 @@ namespace porofrac
 
 
     template <int dim, typename System>
-    Tensor<1, dim>
-    ContactSolver<dim, System>::face_multiplier(const VectorType  &lambda,
-                                                const unsigned int f) const
-    {
-      Tensor<1, dim> l;
-      for (unsigned int d = 0; d < dim; ++d)
-        l[d] = lambda(dim * f + d);
-      return l;
-    }
-
-
-
-    template <int dim, typename System>
     bool
     ContactSolver<dim, System>::same_states(const std::vector<FaceState> &a,
                                             const std::vector<FaceState> &b) const
@@ -168,8 +156,8 @@ namespace porofrac
         {
           if (!system.owns_face(fi))
             continue;
-          const FaceValues           v = local_values(jumps[fi], face_multiplier(lambda, fi), fi);
-          const Tensor<1, dim>      &l = v.lambda, &j = v.jump;
+          const FaceValues      v = local_values(jumps[fi], face_multiplier<dim>(lambda, fi), fi);
+          const Tensor<1, dim> &l = v.lambda, &j = v.jump;
           const LocalContactLaw<dim> law = local_law(fi, v.slip, c);
           const double               w   = system.face_measure(fi);
           contact += w * law.residual(l, j, true).norm_square();
@@ -266,7 +254,7 @@ namespace porofrac
           if (!system.owns_face(fi))
             continue;
           const Tensor<2, dim>  R = system.frame(fi);
-          const FaceValues      v = local_values(jumps[fi], face_multiplier(lambda, fi), fi);
+          const FaceValues      v = local_values(jumps[fi], face_multiplier<dim>(lambda, fi), fi);
           const Tensor<1, dim> &l = v.lambda, &j = v.jump;
           LocalRows<dim>        lr;
           states[fi]              = method->rows(local_law(fi, v.slip, c), l, j, lr);

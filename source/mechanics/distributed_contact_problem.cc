@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/mechanics/coupling_entry.h>
 #include <porofrac/mechanics/distributed_contact_problem.h>
 
 #include <array>
@@ -138,9 +139,7 @@ namespace porofrac
       std::vector<Row> rows;
       for (const unsigned int f : system.get_distributed_mesh().locally_owned_faces())
         {
-          Tensor<1, dim> l;
-          for (unsigned int d = 0; d < dim; ++d)
-            l[d] = lambda(dim * f + d);
+          const Tensor<1, dim> l = face_multiplier<dim>(lambda, f);
           const Tensor<2, dim> R = system.frame(f);
           const Tensor<1, dim> j = R * jumps[f], lr = R * l;
           Row                  row{f, {}};

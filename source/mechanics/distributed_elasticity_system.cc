@@ -10,6 +10,7 @@
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mpi_tools.h>
+#include <porofrac/mechanics/coupling_entry.h>
 #include <porofrac/mechanics/distributed_elasticity_system.h>
 #include <porofrac/mechanics/elasticity_assembly.h>
 
@@ -122,13 +123,14 @@ namespace porofrac
       for (const unsigned int f : mesh.locally_owned_faces())
         owned_lambda.add_range(dim * f, dim * (f + 1));
       owned_lambda.compress();
-      stabilization   = make_multiplier_stabilization(mesh.serial, prm);
-      relevant_lambda = owned_lambda;
+      stabilization            = make_multiplier_stabilization(mesh.serial, prm);
+      IndexSet relevant_lambda = owned_lambda;
       for (const unsigned int f : mesh.locally_owned_faces())
         for (unsigned int n = 0; !stabilization.empty() && n < stabilization[f].size(); ++n)
           relevant_lambda.add_range(dim * stabilization[f][n].first,
                                     dim * (stabilization[f][n].first + 1));
       relevant_lambda.compress();
+      neighbour_lambda.reinit(owned_lambda, relevant_lambda, comm);
       owned_all = IndexSet(n_dofs());
       owned_all.add_indices(owned_u);
       owned_all.add_indices(owned_lambda, dof_handler.n_dofs());
@@ -372,16 +374,26 @@ namespace porofrac
       face_jumps(u, jumps);
       if (stabilization.empty())
         return;
-      VectorType neighbours(owned_lambda, relevant_lambda, get_communicator());
-      neighbours            = lambda;
+      neighbour_lambda      = lambda;
       const auto multiplier = [&](const unsigned int g) {
-        Tensor<1, dim> l;
-        for (unsigned int k = 0; k < dim; ++k)
-          l[k] = neighbours(dim * g + k);
-        return l;
+        return face_multiplier<dim>(neighbour_lambda, g);
       };
       for (const unsigned int f : mesh.locally_owned_faces())
         jumps[f] -= stabilization_term<dim>(stabilization, f, multiplier);
+    }
+
+
+
+    template <int dim>
+    double
+    DistributedElasticitySystem<dim>::elastic_energy(const VectorType &u) const
+    {
+      TimerOutput::Scope t(timer, "Mechanics: elastic energy by cells");
+      VectorType         ghosted(owned_u, relevant_u, get_communicator());
+      ghosted = u;
+      return Utilities::MPI::sum(
+        elastic_energy_of_owned_cells(prm, mesh.mapping(), fe, dof_handler, ghosted),
+        get_communicator());
     }
 
 

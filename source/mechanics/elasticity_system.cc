@@ -11,6 +11,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/io/expression.h>
 #include <porofrac/io/text.h>
+#include <porofrac/mechanics/coupling_entry.h>
 #include <porofrac/mechanics/elasticity_assembly.h>
 #include <porofrac/mechanics/elasticity_system.h>
 
@@ -317,17 +318,7 @@ namespace porofrac
     ElasticitySystem<dim>::elastic_energy_by_cells(const Vector<double> &u) const
     {
       TimerOutput::Scope t(timer, "Mechanics: elastic energy by cells");
-      CellScratch<dim>   scratch(mesh.mapping(), fe);
-      Vector<double>     u_local(fe.n_dofs_per_cell());
-      double             energy = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          cell->get_dof_indices(scratch.local);
-          for (unsigned int i = 0; i < scratch.local.size(); ++i)
-            u_local(i) = u(scratch.local[i]);
-          energy += cell_elastic_energy(prm, fe, cell, u_local, scratch);
-        }
-      return energy;
+      return elastic_energy_of_owned_cells(prm, mesh.mapping(), fe, dof_handler, u);
     }
 
 
@@ -459,12 +450,7 @@ namespace porofrac
       face_jumps(u, jumps);
       if (stabilization.empty())
         return;
-      const auto multiplier = [&](const unsigned int g) {
-        Tensor<1, dim> l;
-        for (unsigned int k = 0; k < dim; ++k)
-          l[k] = lambda(dim * g + k);
-        return l;
-      };
+      const auto multiplier = [&](const unsigned int g) { return face_multiplier<dim>(lambda, g); };
       for (unsigned int fi = 0; fi < coupling.size(); ++fi)
         jumps[fi] -= stabilization_term<dim>(stabilization, fi, multiplier);
     }

@@ -155,6 +155,13 @@ namespace porofrac
       {
         return distributed != nullptr;
       }
+      /// 1/2 a(u, u) of the current displacement, from the distributed problem if there is one
+      /// (collective over its processes; the serial copy holds the same u).
+      double
+      elastic_energy() const
+      {
+        return distributed ? distributed->elastic_energy() : mechanics.elastic_energy();
+      }
       /// The linear solver of the contact iterations.
       std::string
       contact_linear_solver() const

@@ -161,9 +161,6 @@ namespace porofrac
       local_values(const Tensor<1, dim> &jump,
                    const Tensor<1, dim> &lambda,
                    const unsigned int    f) const;
-      /// The multiplier of face @p f (an owned face).
-      Tensor<1, dim>
-      face_multiplier(const VectorType &lambda, const unsigned int f) const;
       /// The same value on every process: whether @p a and @p b agree on every face.
       bool
       same_states(const std::vector<FaceState> &a, const std::vector<FaceState> &b) const;

@@ -114,6 +114,13 @@ namespace porofrac
         return lambda;
       }
 
+      /// 1/2 a(u, u) (J). Collective.
+      double
+      elastic_energy() const
+      {
+        return system.elastic_energy(u);
+      }
+
       /// The contact values of every fracture face, in index order, on rank 0 (empty on the
       /// other ranks). Collective.
       std::vector<ContactFaceValues<dim>>

@@ -196,6 +196,10 @@ namespace porofrac
       {
         return stabilization;
       }
+      /// 1/2 a(u, u), integrated cell by cell over the owned cells and summed over the
+      /// processes (collective).
+      double
+      elastic_energy(const VectorType &u) const;
       /// This process's share of the squared norms of f - K u - B^T lambda and of f over the
       /// unconstrained dofs.
       std::pair<double, double>
@@ -257,8 +261,9 @@ namespace porofrac
       DoFHandler<dim>         dof_handler;
       IndexSet                owned_u, relevant_u, owned_lambda, owned_all;
       MultiplierStabilization stabilization;
-      /// The owned multipliers and those of the owned faces' neighbours through S.
-      IndexSet                  relevant_lambda;
+      /// Scratch of contact_jumps: the owned multipliers and those of the owned faces'
+      /// neighbours through S (ghosts), kept to allocate its ghost exchange once.
+      mutable VectorType        neighbour_lambda;
       AffineConstraints<double> constraints, constraints_hom;
 
       /// K with the homogeneous constraints applied, and K - K_constrained (nonzero only on the

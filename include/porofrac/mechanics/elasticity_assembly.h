@@ -114,6 +114,30 @@ namespace porofrac
                         const Vector<double>                                 &u_local,
                         CellScratch<dim>                                     &scratch);
 
+    /// 1/2 a(u, u) over this process's locally owned cells (every cell of a serial mesh), cell
+    /// by cell without K; @p u holds the values of those cells' dofs (ghosted in parallel).
+    template <int dim, typename VectorType>
+    double
+    elastic_energy_of_owned_cells(const ContactParameters &prm,
+                                  const Mapping<dim>      &mapping,
+                                  const FESystem<dim>     &fe,
+                                  const DoFHandler<dim>   &dof_handler,
+                                  const VectorType        &u)
+    {
+      CellScratch<dim> scratch(mapping, fe);
+      Vector<double>   u_local(fe.n_dofs_per_cell());
+      double           energy = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(scratch.local);
+            for (unsigned int i = 0; i < scratch.local.size(); ++i)
+              u_local(i) = u(scratch.local[i]);
+            energy += cell_elastic_energy(prm, fe, cell, u_local, scratch);
+          }
+      return energy;
+    }
+
     /// Elasticity matrix, body force, pre-stress, int_K div phi_i and the weighted |K| of one
     /// cell, added to @p scratch.
     template <int dim>
