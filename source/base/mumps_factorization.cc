@@ -2,12 +2,50 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mumps_factorization.h>
 
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 
 namespace porofrac
 {
+  namespace
+  {
+    /// MemAvailable of /proc/meminfo in MB; 0 where it cannot be read (no check then).
+    double
+    available_memory_mb()
+    {
+      std::ifstream meminfo("/proc/meminfo");
+      std::string   key;
+      double        kilobytes = 0;
+      while (meminfo >> key >> kilobytes)
+        {
+          if (key == "MemAvailable:")
+            return kilobytes / 1024.;
+          meminfo.ignore(256, '\n');
+        }
+      return 0;
+    }
+
+    /// @p megabytes as "12.3 GB" or, below a GB, "456 MB".
+    std::string
+    memory_size(const double megabytes)
+    {
+      std::ostringstream text;
+      if (megabytes >= 1024)
+        text << std::fixed << std::setprecision(1) << megabytes / 1024. << " GB";
+      else
+        text << std::fixed << std::setprecision(megabytes < 1 ? 3 : 0) << megabytes << " MB";
+      return text.str();
+    }
+  } // namespace
+
+
+
   MumpsFactorization::MumpsFactorization(const std::string &what)
       : what(what)
   {
@@ -30,11 +68,39 @@ namespace porofrac
 
 
   void
+  MumpsFactorization::check_memory(const MPI_Comm comm) const
+  {
+    const auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get());
+    // INFO(15): this process's estimate, in MB, of MUMPS's in-core factorization.
+    const double process_need = mumps ? const_cast<Amesos_Mumps *>(mumps)->GetINFO()[14] : 0.;
+    MPI_Comm     machine;
+    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
+    double need = 0;
+    MPI_Allreduce(&process_need, &need, 1, MPI_DOUBLE, MPI_SUM, machine);
+    MPI_Comm_free(&machine);
+    const double limit = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
+    // A need above its machine's limit, and that limit, agreed by every process.
+    const bool short_of_memory = limit > 0 && need > limit;
+    double     over[2] = {short_of_memory ? need : 0., short_of_memory ? limit : 0.}, worst[2];
+    MPI_Allreduce(over, worst, 2, MPI_DOUBLE, MPI_MAX, comm);
+    if (worst[0] > 0)
+      {
+        throw SolverFailure(what + ": MUMPS would need an estimated " + memory_size(worst[0]) +
+                            " for its factorization, more than the " + memory_size(worst[1]) +
+                            " this machine has available; use more machines, a coarser mesh or "
+                            "an iterative linear solver");
+      }
+  }
+
+
+
+  void
   MumpsFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &matrix)
   {
     done = false;
     if (analysed != &matrix.trilinos_matrix())
       {
+        solver.reset(); // before the problem it refers to
         problem = std::make_unique<Epetra_LinearProblem>();
         problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
         Amesos factory;
@@ -42,6 +108,8 @@ namespace porofrac
         if (!solver)
           throw SolverFailure(what + ": Trilinos Amesos was built without MUMPS");
         check(solver->SymbolicFactorization(), "symbolic factorization");
+        analysed = nullptr;
+        check_memory(matrix.get_mpi_communicator());
         analysed = &matrix.trilinos_matrix();
       }
     check(solver->NumericFactorization(), "factorization");

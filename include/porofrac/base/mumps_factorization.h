@@ -8,6 +8,8 @@
 #include <memory>
 #include <string>
 
+#include <mpi.h>
+
 class Amesos_BaseSolver;
 class Epetra_LinearProblem;
 
@@ -18,6 +20,11 @@ namespace porofrac
    * symbolic analysis is done once for the matrix given to the first factorize(); later
    * calls refactorize the same matrix object (same pattern, new values). Failures throw
    * SolverFailure naming @p what.
+   *
+   * After each analysis, MUMPS's estimate of the factorization's memory (INFO(15) of every
+   * process, summed over the processes of each machine) is compared with the memory the machine
+   * has available (MemAvailable of /proc/meminfo, or set_memory_limit()): a factorization that
+   * would not fit throws SolverFailure before it starts, instead of exhausting the machine.
    */
   class MumpsFactorization
   {
@@ -35,6 +42,14 @@ namespace porofrac
     solve(dealii::TrilinosWrappers::MPI::Vector       &x,
           const dealii::TrilinosWrappers::MPI::Vector &b) const;
 
+    /// Checks against @p megabytes per machine instead of the available memory (0: the
+    /// available memory again).
+    void
+    set_memory_limit(const double megabytes)
+    {
+      memory_limit_mb = megabytes;
+    }
+
     bool
     factorized() const
     {
@@ -45,12 +60,18 @@ namespace porofrac
     void
     check(const int status, const char *step) const;
 
+    /// Throws (on every process of @p comm) if the analysed factorization needs more memory than
+    /// some machine has.
+    void
+    check_memory(const MPI_Comm comm) const;
+
     const std::string                     what;
     std::unique_ptr<Epetra_LinearProblem> problem;
     std::unique_ptr<Amesos_BaseSolver>    solver;
     /// The Epetra matrix of the symbolic analysis (deal.II may replace it on a deep copy).
-    const void *analysed = nullptr;
-    bool        done     = false;
+    const void *analysed        = nullptr;
+    bool        done            = false;
+    double      memory_limit_mb = 0;
   };
 } // namespace porofrac
 

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// MumpsFactorization's memory check: a tridiagonal matrix (3, -1; n = 20000) factorizes and solves
+// within the machine's available memory (residual printed), and the same matrix with a memory limit
+// below MUMPS's estimate throws SolverFailure after the analysis, before the factorization, naming
+// the factorization; the object then still works with the limit lifted.
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <porofrac/base/exceptions.h>
+#include <porofrac/base/mumps_factorization.h>
+
+#include <iostream>
+
+using namespace dealii;
+
+namespace
+{
+  double
+  solve_and_residual(porofrac::MumpsFactorization         &lu,
+                     const TrilinosWrappers::SparseMatrix &A,
+                     const IndexSet                       &rows)
+  {
+    TrilinosWrappers::MPI::Vector x(rows, MPI_COMM_WORLD), b(x), r(x);
+    b = 1;
+    lu.factorize(A);
+    lu.solve(x, b);
+    A.vmult(r, x);
+    r -= b;
+    return r.l2_norm() / b.l2_norm();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int               n = 20000;
+  IndexSet                         rows(n);
+  rows.add_range(0, n);
+  DynamicSparsityPattern dsp(n, n);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = (i > 0 ? i - 1 : 0); j < std::min(n, i + 2); ++j)
+      dsp.add(i, j);
+  TrilinosWrappers::SparseMatrix A;
+  A.reinit(rows, rows, dsp, MPI_COMM_WORLD);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = (i > 0 ? i - 1 : 0); j < std::min(n, i + 2); ++j)
+      A.set(i, j, i == j ? 3. : -1.);
+  A.compress(VectorOperation::insert);
+
+  porofrac::MumpsFactorization fits("test factorization");
+  std::cout << "within the available memory: relative residual below 1e-10: "
+            << (solve_and_residual(fits, A, rows) < 1e-10 ? "yes" : "no") << std::endl;
+
+  porofrac::MumpsFactorization limited("test factorization");
+  limited.set_memory_limit(1e-3);
+  try
+    {
+      solve_and_residual(limited, A, rows);
+      std::cout << "limit 1 kB: no error" << std::endl;
+    }
+  catch (const porofrac::SolverFailure &e)
+    {
+      const std::string message = e.what();
+      // MUMPS's estimate itself depends on its version: left out.
+      std::cout << "limit 1 kB: " << message.substr(0, message.find(" an estimated")) << " ..."
+                << message.substr(message.find(" for its factorization")) << std::endl
+                << "factorized: " << (limited.factorized() ? "yes" : "no") << std::endl;
+    }
+  limited.set_memory_limit(0);
+  std::cout << "limit lifted: relative residual below 1e-10: "
+            << (solve_and_residual(limited, A, rows) < 1e-10 ? "yes" : "no") << std::endl;
+}
