@@ -68,7 +68,7 @@ namespace porofrac
 
 
   void
-  MumpsFactorization::check_memory(const MPI_Comm comm) const
+  MumpsFactorization::check_memory(const MPI_Comm comm)
   {
     const auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get());
     // INFO(15): this process's estimate, in MB, of MUMPS's in-core factorization.
@@ -78,6 +78,7 @@ namespace porofrac
     double need = 0;
     MPI_Allreduce(&process_need, &need, 1, MPI_DOUBLE, MPI_SUM, machine);
     MPI_Comm_free(&machine);
+    MPI_Allreduce(&need, &estimate_mb, 1, MPI_DOUBLE, MPI_MAX, comm);
     const double limit = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
     // A need above its machine's limit, and that limit, agreed by every process.
     const bool short_of_memory = limit > 0 && need > limit;

@@ -9,7 +9,9 @@
 #include <porofrac/mechanics/contact_block_preconditioner.h>
 #include <porofrac/mechanics/distributed_contact_linear_solver.h>
 
+#include <iomanip>
 #include <memory>
+#include <sstream>
 
 namespace porofrac
 {
@@ -87,8 +89,6 @@ namespace porofrac
             }
           catch (const SolverControl::NoConvergence &)
             {
-              progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
-                       << " iterations; MUMPS solves this step" << std::endl;
               if (!whole_jacobian)
                 whole_jacobian = std::make_unique<DistributedJacobian<dim>>(
                   system, DistributedJacobian<dim>::Storage::whole_matrix);
@@ -96,6 +96,12 @@ namespace porofrac
               fallback.factorize(whole_jacobian->matrix());
               fallback.solve(x, rhs);
               ++this->stats.direct_fallbacks;
+              std::ostringstream memory;
+              memory << std::fixed << std::setprecision(1)
+                     << fallback.estimated_memory_mb() / 1024.;
+              progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
+                       << " iterations; MUMPS solved this step (estimated memory " << memory.str()
+                       << " GB)" << std::endl;
             }
           this->stats.linear_iterations += control.last_step();
           this->stats.time_solves += clock.wall_time();

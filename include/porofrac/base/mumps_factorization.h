@@ -50,6 +50,14 @@ namespace porofrac
       memory_limit_mb = megabytes;
     }
 
+    /// MUMPS's estimate of the last analysed factorization's memory, in MB (the largest over
+    /// the machines of the processes).
+    double
+    estimated_memory_mb() const
+    {
+      return estimate_mb;
+    }
+
     bool
     factorized() const
     {
@@ -63,7 +71,7 @@ namespace porofrac
     /// Throws (on every process of @p comm) if the analysed factorization needs more memory than
     /// some machine has.
     void
-    check_memory(const MPI_Comm comm) const;
+    check_memory(const MPI_Comm comm);
 
     const std::string                     what;
     std::unique_ptr<Epetra_LinearProblem> problem;
@@ -72,6 +80,7 @@ namespace porofrac
     const void *analysed        = nullptr;
     bool        done            = false;
     double      memory_limit_mb = 0;
+    double      estimate_mb     = 0;
   };
 } // namespace porofrac
 
