@@ -101,7 +101,8 @@ namespace porofrac
     done = false;
     if (analysed != &matrix.trilinos_matrix())
       {
-        solver.reset(); // before the problem it refers to
+        analysed = nullptr; // until the new analysis has passed its checks
+        solver.reset();     // before the problem it refers to
         problem = std::make_unique<Epetra_LinearProblem>();
         problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
         Amesos factory;
@@ -109,7 +110,6 @@ namespace porofrac
         if (!solver)
           throw SolverFailure(what + ": Trilinos Amesos was built without MUMPS");
         check(solver->SymbolicFactorization(), "symbolic factorization");
-        analysed = nullptr;
         check_memory(matrix.get_mpi_communicator());
         analysed = &matrix.trilinos_matrix();
       }
