@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/mpi.h>
+
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mumps_factorization.h>
 
@@ -75,19 +77,18 @@ namespace porofrac
     const double process_need = mumps ? const_cast<Amesos_Mumps *>(mumps)->GetINFO()[14] : 0.;
     MPI_Comm     machine;
     MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
-    double need = 0;
-    MPI_Allreduce(&process_need, &need, 1, MPI_DOUBLE, MPI_SUM, machine);
+    const double need = dealii::Utilities::MPI::sum(process_need, machine);
     MPI_Comm_free(&machine);
-    MPI_Allreduce(&need, &estimate_mb, 1, MPI_DOUBLE, MPI_MAX, comm);
+    estimate_mb        = dealii::Utilities::MPI::max(need, comm);
     const double limit = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
     // A need above its machine's limit, and that limit, agreed by every process.
-    const bool short_of_memory = limit > 0 && need > limit;
-    double     over[2] = {short_of_memory ? need : 0., short_of_memory ? limit : 0.}, worst[2];
-    MPI_Allreduce(over, worst, 2, MPI_DOUBLE, MPI_MAX, comm);
-    if (worst[0] > 0)
+    const bool   short_of_memory = limit > 0 && need > limit;
+    const double worst_need      = dealii::Utilities::MPI::max(short_of_memory ? need : 0., comm);
+    const double worst_limit     = dealii::Utilities::MPI::max(short_of_memory ? limit : 0., comm);
+    if (worst_need > 0)
       {
-        throw SolverFailure(what + ": MUMPS would need an estimated " + memory_size(worst[0]) +
-                            " for its factorization, more than the " + memory_size(worst[1]) +
+        throw SolverFailure(what + ": MUMPS would need an estimated " + memory_size(worst_need) +
+                            " for its factorization, more than the " + memory_size(worst_limit) +
                             " this machine has available; use more machines, a coarser mesh or "
                             "an iterative linear solver");
       }
