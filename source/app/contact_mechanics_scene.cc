@@ -45,16 +45,7 @@ namespace porofrac
                                              context.progress,
                                              context.timer);
       problem.setup();
-      context.report << "Mechanics: " << problem.n_dofs() << " dofs ("
-                     << problem.n_displacement_dofs() << " displacement, "
-                     << problem.n_dofs() - problem.n_displacement_dofs() << " multiplier)"
-                     << std::endl;
-      context.summary["n_dofs_mechanics"] = problem.n_dofs();
-      {
-        Timer clock;
-        problem.solve();
-        context.summary["contact_solve_time_s"] = clock.wall_time();
-      }
+      solve_contact_problem(problem, parameters.mechanics, context);
       const auto                 faces = mechanics::contact_face_values(problem);
       const ContactSolution<dim> solution{parameters.mechanics,
                                           problem.statistics(),

@@ -61,22 +61,43 @@ namespace porofrac
 
 
 
-    template <int dim>
-    io::Json
-    summarize_contact_solution(const ContactSolution<dim> &solution)
+    void
+    add_iteration_history(const mechanics::ContactStatistics &statistics, io::Json &summary)
     {
-      const auto                         &prm = solution.parameters;
-      const mechanics::ContactStatistics &s   = solution.statistics;
-      const auto counts               = mechanics::count_states(solution.mesh, solution.faces);
-      io::Json   m                    = io::Json::object();
+      const std::vector<std::string> terms  = {"contact", "mechanical", "stick_slip"};
+      const std::vector<std::string> states = {"open", "stick", "slip", "changed"};
+      io::Json                       r      = io::Json::object();
+      for (unsigned int k = 0; k < terms.size(); ++k)
+        {
+          std::vector<double> values;
+          for (const auto &t : statistics.residual_terms_history)
+            values.push_back(t[k]);
+          r[terms[k]] = values;
+        }
+      io::Json f = io::Json::object();
+      for (unsigned int k = 0; k < states.size(); ++k)
+        {
+          std::vector<unsigned int> values;
+          for (const auto &c : statistics.face_state_history)
+            values.push_back(c[k]);
+          f[states[k]] = values;
+        }
+      summary["residual_terms"] = r;
+      summary["face_states"]    = f;
+    }
+
+
+
+    io::Json
+    summarize_contact_iterations(const mechanics::ContactParameters &prm,
+                                 const mechanics::ContactStatistics &s)
+    {
+      io::Json m                      = io::Json::object();
       m["solver"]                     = prm.method;
       m["initial_guess"]              = std::string(prm.stick_guess ? "stick" : "open");
       m["c"]                          = prm.c;
       m["nonlinear_iterations"]       = s.iterations;
       m["converged"]                  = s.converged;
-      m["n_open"]                     = counts[0];
-      m["n_stick"]                    = counts[1];
-      m["n_slip"]                     = counts[2];
       m["residuals"]                  = s.residual_history;
       m["residuals_initial_relative"] = s.initial_relative_history;
       m["steps"]                      = s.step_history;
@@ -86,17 +107,33 @@ namespace porofrac
       m["reused_factorizations"]      = s.reused_factorizations;
       m["linear_iterations"]          = s.linear_iterations;
       m["linear_direct_fallbacks"]    = s.direct_fallbacks;
-      io::Json timing                 = io::Json::object();
-      timing["contact_rows_s"]        = s.time_contact_rows;
-      timing["factorization_s"]       = s.time_factorization;
-      timing["triangular_solves_s"]   = s.time_solves;
-      timing["residuals_s"]           = s.time_residuals;
-      timing["cholesky_s"]            = s.time_cholesky;
-      timing["form_W_s"]              = s.time_form_W;
-      m["timing"]                     = timing;
-      m["linear_solver"]              = solution.linear_solver == solution.requested_solver ?
-                                          solution.requested_solver :
-                                          std::string("full system (schur complement unavailable)");
+      add_iteration_history(s, m);
+      return m;
+    }
+
+
+
+    template <int dim>
+    io::Json
+    summarize_contact_solution(const ContactSolution<dim> &solution)
+    {
+      const mechanics::ContactStatistics &s = solution.statistics;
+      const auto counts             = mechanics::count_states(solution.mesh, solution.faces);
+      io::Json   m                  = summarize_contact_iterations(solution.parameters, s);
+      m["n_open"]                   = counts[0];
+      m["n_stick"]                  = counts[1];
+      m["n_slip"]                   = counts[2];
+      io::Json timing               = io::Json::object();
+      timing["contact_rows_s"]      = s.time_contact_rows;
+      timing["factorization_s"]     = s.time_factorization;
+      timing["triangular_solves_s"] = s.time_solves;
+      timing["residuals_s"]         = s.time_residuals;
+      timing["cholesky_s"]          = s.time_cholesky;
+      timing["form_W_s"]            = s.time_form_W;
+      m["timing"]                   = timing;
+      m["linear_solver"]            = solution.linear_solver == solution.requested_solver ?
+                                        solution.requested_solver :
+                                        std::string("full system (schur complement unavailable)");
       return m;
     }
 

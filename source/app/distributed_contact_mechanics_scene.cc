@@ -68,16 +68,7 @@ namespace porofrac
                                                         context.progress,
                                                         context.timer);
       problem.setup();
-      context.report << "Mechanics: " << problem.n_dofs() << " dofs ("
-                     << problem.n_displacement_dofs() << " displacement, "
-                     << problem.n_dofs() - problem.n_displacement_dofs() << " multiplier)"
-                     << std::endl;
-      context.summary["n_dofs_mechanics"] = problem.n_dofs();
-      {
-        Timer clock;
-        problem.solve();
-        context.summary["contact_solve_time_s"] = clock.wall_time();
-      }
+      solve_contact_problem(problem, parameters.mechanics, context);
       const auto faces = problem.gather_face_values();
       {
         TimerOutput::Scope         t(context.timer, "Output: mechanics");

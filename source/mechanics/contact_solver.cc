@@ -7,6 +7,7 @@
 #include <porofrac/mechanics/coupling_entry.h>
 #include <porofrac/mechanics/distributed_elasticity_system.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -200,9 +201,8 @@ namespace porofrac
 
 
     template <int dim, typename System>
-    double
-    ContactSolver<dim, System>::relative_residual(const VectorType &u,
-                                                  const VectorType &lambda) const
+    std::array<double, 3>
+    ContactSolver<dim, System>::stopping_terms(const VectorType &u, const VectorType &lambda) const
     {
       const ResidualParts r = residual_parts(u, lambda, prm.c);
       // lambda is the scale of C unless it is zero or round-off against c [u] (every face open:
@@ -211,8 +211,30 @@ namespace porofrac
       // A stick face may keep a slip of about tol |lambda| / c under the C test alone: bound it
       // by the problem's own displacement scale, the jumps or else the largest displacement.
       const double slip_scale2 = std::max(r.jump, r.measure * r.u_max * r.u_max);
-      const double rel_stick   = slip_scale2 > 0 ? std::sqrt(r.stick_slip / slip_scale2) : 0.;
-      return std::max(merit(r, scale2), rel_stick);
+      return {{scale2 > 0 ? std::sqrt(r.contact / scale2) : std::sqrt(r.contact),
+               r.load > 0 ? std::sqrt(r.mechanical / r.load) : 0.,
+               slip_scale2 > 0 ? std::sqrt(r.stick_slip / slip_scale2) : 0.}};
+    }
+
+
+
+    template <int dim, typename System>
+    std::array<unsigned int, 4>
+    ContactSolver<dim, System>::state_counts(const std::vector<FaceState> &states) const
+    {
+      std::vector<double> counts(4, 0.);
+      for (unsigned int fi = 0; fi < states.size(); ++fi)
+        if (system.owns_face(fi))
+          {
+            counts[static_cast<unsigned int>(states[fi])] += 1;
+            if (!seen_states.empty() && seen_states.back()[fi] != states[fi])
+              counts[3] += 1;
+          }
+      system.sum_over_processes(counts);
+      return {{static_cast<unsigned int>(counts[0]),
+               static_cast<unsigned int>(counts[1]),
+               static_cast<unsigned int>(counts[2]),
+               static_cast<unsigned int>(counts[3])}};
     }
 
 
@@ -470,6 +492,7 @@ namespace porofrac
               throw SolverFailure(linear_failure_message(e.what()));
             }
           const double alpha_max = cycle_damping_factor(states, stats.iterations);
+          stats.face_state_history.push_back(state_counts(states));
           seen_states.push_back(states);
 
           TimerOutput::Scope t(timer, "Mechanics: contact update");
@@ -478,8 +501,10 @@ namespace porofrac
           lambda_old         = lambda;
           const double alpha = take_step(u_old, lambda_old, delta, alpha_max, c_now, u, lambda);
           stats.step_history.push_back(alpha);
-          const double res = relative_residual(u, lambda);
+          const std::array<double, 3> terms = stopping_terms(u, lambda);
+          const double                res   = std::max({terms[0], terms[1], terms[2]});
           stats.time_residuals += clock.wall_time();
+          stats.residual_terms_history.push_back(terms);
           stats.residual_history.push_back(res);
           {
             const ResidualParts g = residual_parts(u, lambda, prm.c);

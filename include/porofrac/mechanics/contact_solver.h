@@ -14,6 +14,7 @@
 #include <porofrac/mechanics/friction_field.h>
 #include <porofrac/mechanics/parameters.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <utility>
@@ -34,6 +35,13 @@ namespace porofrac
       /// C_n in Pa, C_tau in Pa^2), x_0 the initial guess: one reading of the paper's
       /// "relative residual" (not used for stopping).
       std::vector<double> initial_relative_history;
+      /// The three terms of the stopping test at every iterate (doc/algorithms.md §1.3): |C| /
+      /// |lambda|, |f - K u - B^T lambda| / |f| and the slip of stick faces over the slip
+      /// scale; residual_history holds their maximum.
+      std::vector<std::array<double, 3>> residual_terms_history;
+      /// Face states each Newton step was computed with (open, stick, slip) and how many faces
+      /// changed state from the previous step's.
+      std::vector<std::array<unsigned int, 4>> face_state_history;
       /// Step lengths taken (1 = full step), line-search backtracks, active-set cycles.
       std::vector<double> step_history;
       unsigned int        backtracks      = 0;
@@ -144,11 +152,15 @@ namespace porofrac
       /// Line-search merit: relative contact and mechanical residuals, multiplier scale given.
       static double
       merit(const ResidualParts &r, const double scale2);
-      /// max(|C| / |lambda|, |f - K u - B^T lambda| / |f|, |[u]_tau on stick faces| / slip scale)
-      /// at the target c (doc/algorithms.md §1.3): |c [u]| scales C when lambda is zero or
-      /// round-off against it.
-      double
-      relative_residual(const VectorType &u, const VectorType &lambda) const;
+      /// |C| / |lambda|, |f - K u - B^T lambda| / |f| and |[u]_tau on stick faces| / slip scale
+      /// at the target c (doc/algorithms.md §1.3); the relative residual is their maximum. |c [u]|
+      /// scales C when lambda is zero or round-off against it.
+      std::array<double, 3>
+      stopping_terms(const VectorType &u, const VectorType &lambda) const;
+      /// Face-state counts (open, stick, slip) of @p states over all processes, and how many
+      /// faces differ from the last recorded states.
+      std::array<unsigned int, 4>
+      state_counts(const std::vector<FaceState> &states) const;
       /// Multiplier and jump of a face in its local frame (the tangential jump counted from
       /// the previous jumps, if set), and its slip |[u]_tau| (total), from the face-mean jump
       /// @p jump and the multiplier @p lambda in the global frame.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/timer.h>
 
+#include <porofrac/app/contact_report.h>
 #include <porofrac/app/postprocess/postprocessor.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/io/json.h>
@@ -70,20 +71,14 @@ namespace porofrac
             {
               failure = e.what();
             }
-          const mechanics::ContactStatistics &s = problem.statistics();
-          io::Json                            r = io::Json::object();
-          r["solver"]                           = method;
-          r["initial_guess"]                    = std::string(stick ? "stick" : "open");
-          r["c"]                                = c;
-          r["converged"]                        = s.converged;
-          r["nonlinear_iterations"]             = s.iterations;
-          r["last_residual"]          = s.residual_history.empty() ? 0. : s.residual_history.back();
-          r["residuals"]              = s.residual_history;
-          r["steps"]                  = s.step_history;
-          r["line_search_backtracks"] = s.backtracks;
-          r["cycles_detected"]        = s.cycles_detected;
-          r["factorizations"]         = s.factorizations;
-          r["wall_time_s"]            = clock.wall_time();
+          const mechanics::ContactStatistics &s    = problem.statistics();
+          mechanics::ContactParameters        cell = problem.get_parameters();
+          cell.method                              = method;
+          cell.stick_guess                         = stick;
+          cell.c                                   = c;
+          io::Json r                               = summarize_contact_iterations(cell, s);
+          r["last_residual"] = s.residual_history.empty() ? 0. : s.residual_history.back();
+          r["wall_time_s"]   = clock.wall_time();
           if (!failure.empty())
             r["failure"] = failure;
           std::ostringstream line;
