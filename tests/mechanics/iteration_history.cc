@@ -64,8 +64,8 @@ main()
             (std::abs(static_cast<int>(f[j]) - static_cast<int>(s.face_state_history[k - 1][j])) <=
              static_cast<int>(f[3]));
       std::cout << "iteration " << k + 1 << ": open " << f[0] << ", stick " << f[1] << ", slip "
-                << f[2] << ", changed " << f[3] << "; every face counted once: "
-                << (f[0] + f[1] + f[2] == n_faces ? "yes" : "no")
+                << f[2] << ", changed " << f[3]
+                << "; every face counted once: " << (f[0] + f[1] + f[2] == n_faces ? "yes" : "no")
                 << "; changes cover the counts: " << (changes_cover_counts ? "yes" : "no")
                 << "; max of the terms is the residual: "
                 << (mx == s.residual_history[k] ? "yes" : "no") << "; largest term: "
@@ -84,7 +84,7 @@ main()
     }
   catch (const SolverFailure &)
     {
-      io::Json j = app::summarize_contact_iterations(c, stopped.statistics());
+      io::Json   j    = app::summarize_contact_iterations(c, stopped.statistics());
       const auto text = [](io::Json &value) {
         std::ostringstream out;
         value.write(out);
