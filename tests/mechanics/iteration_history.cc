@@ -53,22 +53,22 @@ main()
   const unsigned int n_faces = mesh->fracture_faces.size();
   for (unsigned int k = 0; k < s.iterations; ++k)
     {
-      const auto  &t  = s.residual_terms_history[k];
-      const auto  &f  = s.face_state_history[k];
+      const auto  &t  = s.residual_terms_history.at(k);
+      const auto  &f  = s.face_state_history.at(k);
       const double mx = std::max({t[0], t[1], t[2]});
       // Changed faces bound the change of each count from the previous step's.
       bool changes_cover_counts = true;
       if (k > 0)
         for (unsigned int j = 0; j < 3; ++j)
-          changes_cover_counts &=
-            (std::abs(static_cast<int>(f[j]) - static_cast<int>(s.face_state_history[k - 1][j])) <=
-             static_cast<int>(f[3]));
+          changes_cover_counts &= (std::abs(static_cast<int>(f[j]) -
+                                            static_cast<int>(s.face_state_history.at(k - 1)[j])) <=
+                                   static_cast<int>(f[3]));
       std::cout << "iteration " << k + 1 << ": open " << f[0] << ", stick " << f[1] << ", slip "
                 << f[2] << ", changed " << f[3]
                 << "; every face counted once: " << (f[0] + f[1] + f[2] == n_faces ? "yes" : "no")
                 << "; changes cover the counts: " << (changes_cover_counts ? "yes" : "no")
                 << "; max of the terms is the residual: "
-                << (mx == s.residual_history[k] ? "yes" : "no") << "; largest term: "
+                << (mx == s.residual_history.at(k) ? "yes" : "no") << "; largest term: "
                 << (mx == t[0] ? "contact" : (mx == t[1] ? "mechanical" : "stick slip"))
                 << std::endl;
     }
