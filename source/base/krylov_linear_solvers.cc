@@ -116,7 +116,8 @@ namespace porofrac
       void
       initialize(const TrilinosWrappers::SparseMatrix &m) override
       {
-        matrix = &m;
+        matrix            = &m;
+        factors_of_matrix = false;
         try
           {
             preconditioner->initialize(m);
@@ -139,6 +140,13 @@ namespace porofrac
         const double norm = b.l2_norm();
         if (norm == 0)
           return;
+        // A matrix GMRES already failed on (the caller reuses a set-up): its factors solve it.
+        if (factors_of_matrix)
+          {
+            ++stats.direct_fallbacks;
+            fallback.solve(x, b);
+            return;
+          }
         SolverControl           control(max_iterations, relative_tolerance * norm, false, false);
         SolverGMRES<VectorType> gmres(control, SolverGMRES<VectorType>::AdditionalData(50, true));
         try
@@ -151,6 +159,7 @@ namespace porofrac
             stats.iterations += control.last_step();
             ++stats.direct_fallbacks;
             fallback.factorize(*matrix);
+            factors_of_matrix = true;
             fallback.solve(x, b);
             return;
           }
@@ -174,6 +183,8 @@ namespace porofrac
       const std::string                     what;
       const TrilinosWrappers::SparseMatrix *matrix = nullptr;
       MumpsFactorization                    fallback;
+      /// Whether fallback holds the factors of the matrix of the last initialize().
+      bool factors_of_matrix = false;
     };
   } // namespace
 

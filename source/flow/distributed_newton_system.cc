@@ -45,7 +45,25 @@ namespace porofrac
     DistributedNewtonSystem::solve(const SparseMatrix<double> &jacobian,
                                    const Vector<double>       &residual,
                                    Vector<double>             &update,
-                                   const double                relative_tolerance)
+                                   const double                relative_tolerance,
+                                   const bool                  reuse_setup)
+    {
+      if (!reuse_setup)
+        set_up(jacobian);
+      for (const auto row : owned)
+        b[row] = residual(row);
+      b.compress(VectorOperation::insert);
+      solver->solve(b, x, relative_tolerance);
+      update = 0;
+      for (const auto row : owned)
+        update(row) = x[row];
+      sum(update);
+    }
+
+
+
+    void
+    DistributedNewtonSystem::set_up(const SparseMatrix<double> &jacobian)
     {
       std::vector<types::global_dof_index> columns;
       std::vector<double>                  values;
@@ -61,15 +79,7 @@ namespace porofrac
           matrix.set(row, columns.size(), columns.data(), values.data());
         }
       matrix.compress(VectorOperation::insert);
-      for (const auto row : owned)
-        b[row] = residual(row);
-      b.compress(VectorOperation::insert);
       solver->initialize(matrix);
-      solver->solve(b, x, relative_tolerance);
-      update = 0;
-      for (const auto row : owned)
-        update(row) = x[row];
-      sum(update);
     }
 
 

@@ -66,6 +66,7 @@ namespace porofrac
       s["iterations_per_solve"] =
         statistics.solves > 0 ? double(statistics.iterations) / statistics.solves : 0.;
       s["direct_fallbacks"] = statistics.direct_fallbacks;
+      s["reused_setups"]    = statistics.reused_setups;
       return s;
     }
 
@@ -75,19 +76,22 @@ namespace porofrac
       w.put("flow linear solves", static_cast<unsigned int>(statistics.solves));
       w.put("flow linear iterations", static_cast<unsigned int>(statistics.iterations));
       w.put("flow linear direct fallbacks", static_cast<unsigned int>(statistics.direct_fallbacks));
+      w.put("flow linear reused set-ups", static_cast<unsigned int>(statistics.reused_setups));
     }
 
     LinearSolverStatistics
     load_linear_statistics(io::CheckpointReader &r)
     {
-      unsigned int solves = 0, iterations = 0, fallbacks = 0;
+      unsigned int solves = 0, iterations = 0, fallbacks = 0, reused = 0;
       r.get("flow linear solves", solves);
       r.get("flow linear iterations", iterations);
       r.get("flow linear direct fallbacks", fallbacks);
+      r.get("flow linear reused set-ups", reused);
       LinearSolverStatistics statistics;
       statistics.solves           = solves;
       statistics.iterations       = iterations;
       statistics.direct_fallbacks = fallbacks;
+      statistics.reused_setups    = reused;
       return statistics;
     }
 

@@ -77,6 +77,7 @@ namespace porofrac
                 dsp.add(dof(c.b, p), dof(c.a, q));
               }
       jacobian.clear();
+      set_up_jacobian.clear();
       sparsity.copy_from(dsp);
       jacobian.reinit(sparsity);
     }
@@ -549,22 +550,47 @@ namespace porofrac
                                                "Flow: linear solve (" + linear_solver_name() + ")");
       // A singular or failed factorisation is a failed step (converged = false), never an
       // exception: the caller cuts the time step.
+      const bool reuse = jacobian_unchanged();
+      reused_setups += reuse;
       try
         {
           if (distribution)
-            distribution->solve(jacobian, residual, update, tolerance);
+            distribution->solve(jacobian, residual, update, tolerance, reuse);
           else
             {
-              linear_solver->initialize(jacobian);
+              if (!reuse)
+                linear_solver->initialize(jacobian);
               linear_solver->solve(residual, update, tolerance);
             }
         }
       catch (const SolverFailure &e)
         {
+          set_up_jacobian.clear();
           failure = "linear solver failed (" + std::string(e.what()) + ")";
           return false;
         }
       return true;
+    }
+
+
+
+    template <int dim>
+    bool
+    TwoPhaseSolver<dim>::jacobian_unchanged()
+    {
+      bool same = set_up_jacobian.size() == jacobian.n_nonzero_elements();
+      auto kept = set_up_jacobian.begin();
+      for (const auto &entry : jacobian)
+        same = same && *kept++ == entry.value();
+      if (distribution)
+        same = distribution->all_processes(same);
+      if (!same)
+        {
+          set_up_jacobian.clear();
+          for (const auto &entry : jacobian)
+            set_up_jacobian.push_back(entry.value());
+        }
+      return same;
     }
 
 

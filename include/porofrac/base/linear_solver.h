@@ -34,6 +34,8 @@ namespace porofrac
     unsigned long iterations = 0;
     /// Solves an iterative solver handed to a direct one after Max linear iterations.
     unsigned long direct_fallbacks = 0;
+    /// Solves that used the set-up (factors, preconditioner) of an unchanged matrix again.
+    unsigned long reused_setups = 0;
 
     LinearSolverStatistics &
     operator+=(const LinearSolverStatistics &other)
@@ -41,6 +43,7 @@ namespace porofrac
       solves += other.solves;
       iterations += other.iterations;
       direct_fallbacks += other.direct_fallbacks;
+      reused_setups += other.reused_setups;
       return *this;
     }
   };

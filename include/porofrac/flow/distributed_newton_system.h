@@ -46,12 +46,15 @@ namespace porofrac
 
       /// update = J^{-1} residual with the owned rows of @p jacobian, to the relative residual
       /// @p relative_tolerance for iterative solvers; the whole update on every process.
-      /// Throws SolverFailure on every process if the solver fails.
+      /// Throws SolverFailure on every process if the solver fails. With @p reuse_setup, the
+      /// matrix and the solver's factors or preconditioner of the last call are used again (the
+      /// caller has checked that @p jacobian has not changed).
       void
       solve(const dealii::SparseMatrix<double> &jacobian,
             const dealii::Vector<double>       &residual,
             dealii::Vector<double>             &update,
-            const double                        relative_tolerance);
+            const double                        relative_tolerance,
+            const bool                          reuse_setup = false);
 
       /// The distributed linear solver (its name and statistics).
       const DistributedLinearSolver &
@@ -67,6 +70,10 @@ namespace porofrac
       const MPI_Comm communicator;
 
     private:
+      /// Copies the owned rows of @p jacobian into the distributed matrix and sets the solver up.
+      void
+      set_up(const dealii::SparseMatrix<double> &jacobian);
+
       const dealii::IndexSet                 owned;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       /// Right-hand side and solution of the owned rows, kept between solves.

@@ -103,6 +103,7 @@ namespace porofrac
         LinearSolverStatistics s = linear_before_restart;
         s +=
           distribution ? distribution->linear_solver().statistics() : linear_solver->statistics();
+        s.reused_setups += reused_setups;
         return s;
       }
 
@@ -249,6 +250,15 @@ namespace porofrac
       {
         return !distribution || owned_node[i];
       }
+      /// Whether the Jacobian equals, value for value and on every process, the one the linear
+      /// solver was last set up with; stores its values for the next call. Then the solver's
+      /// factors or preconditioner are used again: a linear (single-phase) step factorizes once.
+      bool
+      jacobian_unchanged();
+      /// The Jacobian values of the last linear-solver set-up (empty: none, or it failed).
+      std::vector<double> set_up_jacobian;
+      /// Solves with the set-up of an unchanged Jacobian (jacobian_unchanged()).
+      unsigned long          reused_setups = 0;
       LinearSolverStatistics linear_before_restart;
       /// Solver of the Newton systems (it may keep set-up of the fixed sparsity pattern).
       std::shared_ptr<SerialLinearSolver> linear_solver;
