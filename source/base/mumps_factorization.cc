@@ -62,9 +62,22 @@ namespace porofrac
   void
   MumpsFactorization::check(const int status, const char *step) const
   {
-    if (status != 0)
-      throw SolverFailure(what + ": MUMPS " + step + " failed (Amesos status " +
-                          std::to_string(status) + ")");
+    if (status == 0)
+      return;
+    std::string reason = "Amesos status " + std::to_string(status);
+    if (auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get()))
+      {
+        // INFOG(1) is MUMPS's own error code, INFOG(2) its detail (users' guide, section 8).
+        const int *infog = mumps->GetINFOG();
+        reason += ", INFOG(1) = " + std::to_string(infog[0]);
+        if (infog[0] == -10)
+          reason += ": numerically singular matrix, " + std::to_string(infog[1]) +
+                    " pivots eliminated of " +
+                    std::to_string(problem->GetMatrix()->NumGlobalRows());
+        else if (infog[0] == -9 || infog[0] == -8 || infog[0] == -13)
+          reason += ": MUMPS ran out of its working memory";
+      }
+    throw SolverFailure(what + ": MUMPS " + step + " failed (" + reason + ")");
   }
 
 
