@@ -65,7 +65,7 @@ main()
   }
   // Two-phase drainage: a new set-up for every solve.
   {
-    flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0, 1});
+    flow::TpfaGrid<2> grid(*mesh, false, {0, 1}, {0});
     flow_test::set_data(grid);
     const auto              rocks = flow_test::corey_rocks();
     flow::TwoPhaseSolver<2> solver(grid, rocks, flow_test::tight_newton());
