@@ -234,7 +234,8 @@ namespace porofrac
       if (J)
         *J = 0;
       // Accumulation (PV S)^{n+1} - PV_old S^n (scheme (11a)), PV with the Biot storage (11d).
-      std::array<double, 2> dPV;
+      std::array<double, 2>     dPV;
+      std::vector<unsigned int> massless;
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
         {
           if (node_dof[i] == numbers::invalid_unsigned_int || !assembles(i))
@@ -244,6 +245,7 @@ namespace porofrac
           const double PV = pore_volume(s, i, dPV), PV_old = old_pore_volume[i];
           if (PV == 0 && PV_old == 0)
             {
+              massless.push_back(i);
               // Massless node where the non-wetting phase is absent (with the entry slope active
               // or the capillary bound), where the phase's mobilities can all vanish: a
               // Jacobian-only virtual pore volume keeps its rows non-singular. Above the absent
@@ -307,6 +309,8 @@ namespace porofrac
                         J->add(rows[r], cols[k], sign * dt * d[k]);
                 }
             }
+      if (J)
+        hold_unheld_massless_pressures(massless, *J);
       if (distribution)
         distribution->sum(residual);
     }
@@ -345,6 +349,23 @@ namespace porofrac
         return;
       const double PVv = std::max(grid.pore_volume(i), 1e-3 * mean_pore_volume);
       J.add(dof(i, 0), dof(i, 0), PVv / rock.saturation->pressure_scale());
+    }
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::hold_unheld_massless_pressures(const std::vector<unsigned int> &massless,
+                                                        SparseMatrix<double>            &J) const
+    {
+      // A massless node downstream on every connection of neighbours without the phase's
+      // mobility: its p^alpha enters the Jacobian only through the neighbours' mobility
+      // derivatives, and the row has no pivot of its own. The virtual compressibility of
+      // hold_absent_wetting_pressure regularizes it; the residual is unchanged.
+      for (const unsigned int i : massless)
+        for (unsigned int phase = 0; phase < 2; ++phase)
+          if (J.diag_element(dof(i, phase)) == 0)
+            J.add(dof(i, phase),
+                  dof(i, phase),
+                  1e-3 * mean_pore_volume / rocks[grid.nodes[i].rock].saturation->pressure_scale());
     }
 
     template <int dim>
@@ -578,19 +599,16 @@ namespace porofrac
     bool
     TwoPhaseSolver<dim>::jacobian_unchanged()
     {
+      // Compares with the kept values and keeps the new ones in one pass.
       bool same = set_up_jacobian.size() == jacobian.n_nonzero_elements();
+      set_up_jacobian.resize(jacobian.n_nonzero_elements());
       auto kept = set_up_jacobian.begin();
       for (const auto &entry : jacobian)
-        same = same && *kept++ == entry.value();
-      if (distribution)
-        same = distribution->all_processes(same);
-      if (!same)
         {
-          set_up_jacobian.clear();
-          for (const auto &entry : jacobian)
-            set_up_jacobian.push_back(entry.value());
+          same    = same && *kept == entry.value();
+          *kept++ = entry.value();
         }
-      return same;
+      return distribution ? distribution->all_processes(same) : same;
     }
 
 

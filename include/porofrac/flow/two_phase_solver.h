@@ -318,6 +318,12 @@ namespace porofrac
       hold_absent_wetting_pressure(const State          &s,
                                    const unsigned int    i,
                                    SparseMatrix<double> &J) const;
+      /// Jacobian-only virtual compressibility on every phase row of the massless nodes
+      /// @p massless whose diagonal is exactly 0 after assembly (no connection has the node's
+      /// phase upstream with a mobility, and no mass holds its pressure).
+      void
+      hold_unheld_massless_pressures(const std::vector<unsigned int> &massless,
+                                     SparseMatrix<double>            &J) const;
       /// Whether this iteration's Jacobian uses the entry slope (Entry slope in Jacobian in its
       /// first iterations, or the capillary bound).
       bool
