@@ -52,8 +52,10 @@ namespace porofrac
 
 
 
-  CprPreconditioner::CprPreconditioner(const unsigned int block_size)
+  CprPreconditioner::CprPreconditioner(const unsigned int block_size,
+                                       const double       aggregation_threshold)
       : block_size(block_size)
+      , aggregation_threshold(aggregation_threshold)
   {
     AssertThrow(block_size >= 1, ExcMessage("CPR needs at least one unknown per node"));
   }
@@ -139,6 +141,9 @@ namespace porofrac
     TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
     amg_data.elliptic      = true;
     amg_data.smoother_type = "symmetric Gauss-Seidel";
+    // A threshold above ML's 1e-4 keeps the strong couplings of high-contrast networks (the
+    // fracture and interface nodes) in aggregates of their own (doc/algorithms.md §16).
+    amg_data.aggregation_threshold = aggregation_threshold;
     amg.initialize(pressure, amg_data);
     ilu.initialize(matrix);
   }

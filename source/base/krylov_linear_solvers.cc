@@ -36,8 +36,8 @@ namespace porofrac
     class CprStage : public Preconditioner
     {
     public:
-      explicit CprStage(const unsigned int block_size)
-          : cpr(block_size)
+      explicit CprStage(const DistributedLinearSolverOptions &options)
+          : cpr(options.block_size, options.amg_aggregation_threshold)
       {
       }
 
@@ -62,8 +62,9 @@ namespace porofrac
     class AmgStage : public Preconditioner
     {
     public:
-      explicit AmgStage(const unsigned int block_size)
-          : block_size(block_size)
+      explicit AmgStage(const DistributedLinearSolverOptions &options)
+          : block_size(options.block_size)
+          , aggregation_threshold(options.amg_aggregation_threshold)
       {
       }
 
@@ -72,8 +73,9 @@ namespace porofrac
       {
         const IndexSet &owned = matrix.locally_owned_range_indices();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic      = true;
-        data.smoother_type = "symmetric Gauss-Seidel";
+        data.elliptic              = true;
+        data.smoother_type         = "symmetric Gauss-Seidel";
+        data.aggregation_threshold = aggregation_threshold;
         data.constant_modes.assign(block_size, std::vector<bool>(owned.n_elements(), false));
         unsigned int j = 0;
         for (const auto row : owned)
@@ -89,6 +91,7 @@ namespace porofrac
 
     private:
       const unsigned int                block_size;
+      const double                      aggregation_threshold;
       TrilinosWrappers::PreconditionAMG amg;
     };
 
@@ -196,7 +199,7 @@ namespace porofrac
                     "not solved in Max linear iterations is solved by MUMPS.",
                     [](const DistributedLinearSolverOptions &options) {
                       return std::make_unique<KrylovLinearSolver>(
-                        "cpr-gmres", std::make_unique<CprStage>(options.block_size), options);
+                        "cpr-gmres", std::make_unique<CprStage>(options), options);
                     })
 
   POROFRAC_REGISTER(DistributedLinearSolverRegistry,
@@ -207,6 +210,6 @@ namespace porofrac
                     "is solved by MUMPS.",
                     [](const DistributedLinearSolverOptions &options) {
                       return std::make_unique<KrylovLinearSolver>(
-                        "amg-gmres", std::make_unique<AmgStage>(options.block_size), options);
+                        "amg-gmres", std::make_unique<AmgStage>(options), options);
                     })
 } // namespace porofrac

@@ -271,7 +271,15 @@ namespace porofrac
                           Patterns::Integer(1),
                           "Iterative linear solvers: Krylov iterations per Newton step before "
                           "the step is solved by MUMPS instead (counted in summary.json, "
-                          "flow_linear_direct_fallbacks).");
+                          "flow_linear_solver/direct_fallbacks).");
+        prm.declare_entry("AMG aggregation threshold",
+                          "1e-4",
+                          Patterns::Double(0., 1.),
+                          "cpr-gmres and amg-gmres: couplings of the AMG's matrix weaker than "
+                          "this times the geometric mean of their two diagonal entries are "
+                          "dropped before aggregating (Trilinos ML). 1e-4 is ML's default; "
+                          "0.02 lets the AMG follow highly conductive fracture networks (the "
+                          "Berre et al. cases: doc/benchmarks/berre2021.md).");
       }
 
       std::array<double, 2>
@@ -397,6 +405,7 @@ namespace porofrac
       newton.linear_tolerance          = prm.get_double(flow, "Linear solver tolerance");
       newton.linear_forcing            = prm.get_double(flow, "Linear solver forcing");
       newton.max_linear_iterations     = prm.get_integer(flow, "Max linear iterations");
+      newton.amg_aggregation_threshold = prm.get_double(flow, "AMG aggregation threshold");
 
       const std::vector<std::string> bc = {"Flow", "Boundary conditions"};
       matrix_dirichlet                  = parse_dirichlet(prm.get(bc, "Matrix"),

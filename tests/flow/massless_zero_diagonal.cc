@@ -36,7 +36,7 @@ main()
   for (const auto &c : grid.connections)
     if (c.a == node || c.b == node)
       state[c.a == node ? c.b : c.a] = {{1e5, 1e5}};
-  state[node] = {{1e5 - 10. - 3e3, 1e5 - 10.}};
+  state[node]  = {{1e5 - 10. - 3e3, 1e5 - 10.}};
   solver.state = state;
   solver.begin_time_step();
 
@@ -45,11 +45,10 @@ main()
   solver.assemble(state, state, 1., residual_alone, nullptr);
   residual_alone -= residual;
 
-  const flow::Rock rock =
-    grid.nodes[node].rock == 0 ? flow::matrix_rock : flow::fracture_rock;
-  const double s_nw     = solver.saturation(state, node, rock);
-  const double diagonal = solver.jacobian.diag_element(solver.dof(node, 1));
-  bool         regular  = true;
+  const flow::Rock rock     = grid.nodes[node].rock == 0 ? flow::matrix_rock : flow::fracture_rock;
+  const double     s_nw     = solver.saturation(state, node, rock);
+  const double     diagonal = solver.jacobian.diag_element(solver.dof(node, 1));
+  bool             regular  = true;
   try
     {
       SparseDirectUMFPACK lu;

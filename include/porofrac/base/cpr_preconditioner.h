@@ -30,7 +30,8 @@ namespace porofrac
   public:
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
-    explicit CprPreconditioner(const unsigned int block_size);
+    /// @p aggregation_threshold: that of the AMG of the pressure stage.
+    CprPreconditioner(const unsigned int block_size, const double aggregation_threshold);
 
     /// Builds A_p, its AMG hierarchy and the ILU of @p jacobian, which must stay alive and
     /// unchanged while vmult() is used. The pattern of A_p is built for the first matrix.
@@ -49,6 +50,7 @@ namespace porofrac
     assemble_pressure(const dealii::TrilinosWrappers::SparseMatrix &jacobian);
 
     const unsigned int                            block_size;
+    const double                                  aggregation_threshold;
     const dealii::TrilinosWrappers::SparseMatrix *jacobian = nullptr;
     dealii::IndexSet                              owned, owned_nodes;
     dealii::TrilinosWrappers::SparseMatrix        pressure;

@@ -24,6 +24,9 @@ namespace porofrac
     unsigned int block_size = 1;
     /// Krylov iterations after which an iterative solver hands the system to MUMPS.
     unsigned int max_iterations = 200;
+    /// The aggregation threshold of the AMG of iterative solvers (Trilinos ML): couplings
+    /// below it, relative to the diagonals, are dropped before aggregating.
+    double amg_aggregation_threshold = 1e-4;
     /// Names the system in failure messages.
     std::string what = "linear system";
   };

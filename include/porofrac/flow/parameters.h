@@ -71,6 +71,8 @@ namespace porofrac
       double linear_forcing   = 1;
       /// Krylov iterations before an iterative solver hands the system to MUMPS.
       unsigned int max_linear_iterations = 200;
+      /// Aggregation threshold of the AMG in cpr-gmres and amg-gmres.
+      double amg_aggregation_threshold = 1e-4;
     };
 
     /// Time stepping: dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max), halved after a failed step.
