@@ -53,9 +53,9 @@ namespace porofrac
 
 
   CprPreconditioner::CprPreconditioner(const unsigned int block_size,
-                                       const double       aggregation_threshold)
+                                       const AmgSettings &amg_settings)
       : block_size(block_size)
-      , aggregation_threshold(aggregation_threshold)
+      , amg_settings(amg_settings)
   {
     AssertThrow(block_size >= 1, ExcMessage("CPR needs at least one unknown per node"));
   }
@@ -142,9 +142,9 @@ namespace porofrac
     amg_data.elliptic      = true;
     amg_data.smoother_type = "symmetric Gauss-Seidel";
     // A threshold above ML's 1e-4 keeps the strong couplings of high-contrast networks (the
-    // fracture and interface nodes) in aggregates of their own (doc/algorithms.md §16).
-    amg_data.aggregation_threshold = aggregation_threshold;
-    amg.initialize(pressure, amg_data);
+    // fracture and interface nodes) in aggregates of their own; MIS aggregation lets them
+    // cross process boundaries (doc/algorithms.md §16).
+    initialize_amg(amg, pressure, amg_data, amg_settings);
     ilu.initialize(matrix);
   }
 

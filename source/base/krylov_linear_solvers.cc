@@ -37,7 +37,7 @@ namespace porofrac
     {
     public:
       explicit CprStage(const DistributedLinearSolverOptions &options)
-          : cpr(options.block_size, options.amg_aggregation_threshold)
+          : cpr(options.block_size, options.amg)
       {
       }
 
@@ -64,7 +64,7 @@ namespace porofrac
     public:
       explicit AmgStage(const DistributedLinearSolverOptions &options)
           : block_size(options.block_size)
-          , aggregation_threshold(options.amg_aggregation_threshold)
+          , settings(options.amg)
       {
       }
 
@@ -73,14 +73,13 @@ namespace porofrac
       {
         const IndexSet &owned = matrix.locally_owned_range_indices();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
-        data.elliptic              = true;
-        data.smoother_type         = "symmetric Gauss-Seidel";
-        data.aggregation_threshold = aggregation_threshold;
+        data.elliptic      = true;
+        data.smoother_type = "symmetric Gauss-Seidel";
         data.constant_modes.assign(block_size, std::vector<bool>(owned.n_elements(), false));
         unsigned int j = 0;
         for (const auto row : owned)
           data.constant_modes[row % block_size][j++] = true;
-        amg.initialize(matrix, data);
+        initialize_amg(amg, matrix, data, settings);
       }
 
       void
@@ -91,7 +90,7 @@ namespace porofrac
 
     private:
       const unsigned int                block_size;
-      const double                      aggregation_threshold;
+      const AmgSettings                 settings;
       TrilinosWrappers::PreconditionAMG amg;
     };
 

@@ -16,15 +16,15 @@ namespace porofrac
                                                      const IndexSet        &owned,
                                                      const std::string     &solver_name,
                                                      const unsigned int     max_iterations,
-                                                     const double           aggregation_threshold)
+                                                     const AmgSettings     &amg)
         : communicator(communicator)
         , owned(owned)
     {
       DistributedLinearSolverOptions options;
       options.block_size     = 2; // (p^w, p^nw) of a node, consecutive (TwoPhaseSolver::dof)
       options.max_iterations = max_iterations;
-      options.amg_aggregation_threshold = aggregation_threshold;
-      options.what                      = "Flow: the Newton system";
+      options.amg            = amg;
+      options.what           = "Flow: the Newton system";
       solver =
         create_distributed_linear_solver(solver_name, "Flow/Distributed linear solver", options);
       matrix.reinit(owned, owned, sparsity, communicator);

@@ -280,6 +280,16 @@ namespace porofrac
                           "dropped before aggregating (Trilinos ML). 1e-4 is ML's default; "
                           "0.02 lets the AMG follow highly conductive fracture networks (the "
                           "Berre et al. cases: doc/benchmarks/berre2021.md).");
+        prm.declare_entry("AMG aggregation",
+                          "uncoupled",
+                          Patterns::Selection(amg_aggregation_names),
+                          "cpr-gmres and amg-gmres: how the AMG (Trilinos ML) forms its "
+                          "aggregates. uncoupled: each process aggregates its own rows (ML's "
+                          "default, the cheapest set-up); mis: maximal independent sets of the "
+                          "whole matrix graph, across process boundaries (ML's MIS), which on "
+                          "several processes lets the aggregates follow a fracture network "
+                          "that crosses a process boundary (Berre et al. case 2: "
+                          "doc/benchmarks/berre2021.md), at a dearer set-up.");
       }
 
       std::array<double, 2>
@@ -405,7 +415,8 @@ namespace porofrac
       newton.linear_tolerance          = prm.get_double(flow, "Linear solver tolerance");
       newton.linear_forcing            = prm.get_double(flow, "Linear solver forcing");
       newton.max_linear_iterations     = prm.get_integer(flow, "Max linear iterations");
-      newton.amg_aggregation_threshold = prm.get_double(flow, "AMG aggregation threshold");
+      newton.amg.aggregation_threshold = prm.get_double(flow, "AMG aggregation threshold");
+      newton.amg.aggregation           = prm.get(flow, "AMG aggregation");
 
       const std::vector<std::string> bc = {"Flow", "Boundary conditions"};
       matrix_dirichlet                  = parse_dirichlet(prm.get(bc, "Matrix"),

@@ -492,6 +492,14 @@ namespace porofrac
                 changed                               = true;
               }
         }
+      // An interface node goes with its fracture cell (that of the side-0 matrix cell), not
+      // with its own matrix cell: a partition boundary along a fracture then cuts the matrix-
+      // interface connections, not the interface-fracture ones, whose |sigma| Lambda_f is
+      // typically orders of magnitude larger and which block-Jacobi ILU and per-process AMG
+      // aggregates would otherwise lose.
+      for (const auto &c : connections)
+        if (c.kind == ConnectionKind::interface_fracture)
+          owner[c.a] = owner[c.b];
       for (auto &o : owner)
         if (o == none)
           o = 0;

@@ -101,13 +101,12 @@ namespace porofrac
             owned.add_range(dof(i, 0), dof(i, 1) + 1);
           }
       owned.compress();
-      distribution =
-        std::make_unique<DistributedNewtonSystem>(communicator,
-                                                  sparsity,
-                                                  owned,
-                                                  parameters.distributed_linear_solver,
-                                                  parameters.max_linear_iterations,
-                                                  parameters.amg_aggregation_threshold);
+      distribution = std::make_unique<DistributedNewtonSystem>(communicator,
+                                                               sparsity,
+                                                               owned,
+                                                               parameters.distributed_linear_solver,
+                                                               parameters.max_linear_iterations,
+                                                               parameters.amg);
     }
 
 

@@ -8,6 +8,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <porofrac/base/amg_preconditioner.h>
+
 namespace porofrac
 {
   /**
@@ -30,8 +32,8 @@ namespace porofrac
   public:
     using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
-    /// @p aggregation_threshold: that of the AMG of the pressure stage.
-    CprPreconditioner(const unsigned int block_size, const double aggregation_threshold);
+    /// @p amg_settings: those of the AMG of the pressure stage.
+    CprPreconditioner(const unsigned int block_size, const AmgSettings &amg_settings);
 
     /// Builds A_p, its AMG hierarchy and the ILU of @p jacobian, which must stay alive and
     /// unchanged while vmult() is used. The pattern of A_p is built for the first matrix.
@@ -50,7 +52,7 @@ namespace porofrac
     assemble_pressure(const dealii::TrilinosWrappers::SparseMatrix &jacobian);
 
     const unsigned int                            block_size;
-    const double                                  aggregation_threshold;
+    const AmgSettings                             amg_settings;
     const dealii::TrilinosWrappers::SparseMatrix *jacobian = nullptr;
     dealii::IndexSet                              owned, owned_nodes;
     dealii::TrilinosWrappers::SparseMatrix        pressure;

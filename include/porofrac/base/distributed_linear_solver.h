@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <porofrac/base/amg_preconditioner.h>
 #include <porofrac/base/linear_solver.h>
 
 #include <memory>
@@ -24,9 +25,8 @@ namespace porofrac
     unsigned int block_size = 1;
     /// Krylov iterations after which an iterative solver hands the system to MUMPS.
     unsigned int max_iterations = 200;
-    /// The aggregation threshold of the AMG of iterative solvers (Trilinos ML): couplings
-    /// below it, relative to the diagonals, are dropped before aggregating.
-    double amg_aggregation_threshold = 1e-4;
+    /// The AMG of iterative solvers (Trilinos ML): aggregation threshold and scheme.
+    AmgSettings amg;
     /// Names the system in failure messages.
     std::string what = "linear system";
   };

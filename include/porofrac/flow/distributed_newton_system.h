@@ -34,13 +34,13 @@ namespace porofrac
     {
     public:
       /// @p max_iterations: Krylov iterations before an iterative solver falls back to MUMPS;
-      /// @p aggregation_threshold: that of the AMG of an iterative solver.
+      /// @p amg: the settings of the AMG of an iterative solver.
       DistributedNewtonSystem(const MPI_Comm                 communicator,
                               const dealii::SparsityPattern &sparsity,
                               const dealii::IndexSet        &owned,
                               const std::string             &solver_name,
                               const unsigned int             max_iterations,
-                              const double                   aggregation_threshold);
+                              const AmgSettings             &amg);
 
       /// Sums @p v over the processes, in place (each entry is assembled by one of them).
       void

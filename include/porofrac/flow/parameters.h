@@ -4,6 +4,7 @@
 
 #include <deal.II/base/types.h>
 
+#include <porofrac/base/amg_preconditioner.h>
 #include <porofrac/flow/rock_type.h>
 
 #include <array>
@@ -71,8 +72,8 @@ namespace porofrac
       double linear_forcing   = 1;
       /// Krylov iterations before an iterative solver hands the system to MUMPS.
       unsigned int max_linear_iterations = 200;
-      /// Aggregation threshold of the AMG in cpr-gmres and amg-gmres.
-      double amg_aggregation_threshold = 1e-4;
+      /// The AMG of cpr-gmres and amg-gmres: aggregation threshold and scheme.
+      AmgSettings amg;
     };
 
     /// Time stepping: dt_{k+1/2} = min(rho dt_{k-1/2}, dt_max), halved after a failed step.

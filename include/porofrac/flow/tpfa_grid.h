@@ -148,9 +148,9 @@ namespace porofrac
       }
 
       /// The process of every node for a distributed Newton system: matrix cell K that of
-      /// @p cell_owner[K]; every other node that of the first node found connected to it
-      /// (through a connection, in order), so that fracture, interface and intersection nodes
-      /// go with a neighbouring cell.
+      /// @p cell_owner[K]; a fracture cell that of the matrix cell on side 0 of its face, and
+      /// both its interface nodes the fracture cell's; every other node that of the first node
+      /// found connected to it (through a connection, in order).
       std::vector<unsigned int>
       node_owners(const std::vector<unsigned int> &cell_owner) const;
 
