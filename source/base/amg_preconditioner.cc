@@ -2,10 +2,10 @@
 #include <porofrac/base/amg_preconditioner.h>
 #include <porofrac/base/exceptions.h>
 
+#include <memory>
+
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
-
-#include <memory>
 
 namespace porofrac
 {

@@ -27,10 +27,10 @@ namespace porofrac
   /// Sets up @p amg for @p matrix: @p data (smoother, null space, ...) with the threshold and
   /// aggregation scheme of @p settings.
   void
-  initialize_amg(dealii::TrilinosWrappers::PreconditionAMG                       &amg,
-                 const dealii::TrilinosWrappers::SparseMatrix                    &matrix,
-                 dealii::TrilinosWrappers::PreconditionAMG::AdditionalData        data,
-                 const AmgSettings                                                &settings);
+  initialize_amg(dealii::TrilinosWrappers::PreconditionAMG                &amg,
+                 const dealii::TrilinosWrappers::SparseMatrix             &matrix,
+                 dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data,
+                 const AmgSettings                                        &settings);
 } // namespace porofrac
 
 #endif
