@@ -4,6 +4,7 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mumps_factorization.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -109,25 +110,60 @@ namespace porofrac
 
 
 
+  bool
+  MumpsFactorization::out_of_workspace() const
+  {
+    auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get());
+    if (!mumps)
+      return false;
+    // The codes for which MUMPS's users' guide (section 8) advises a larger ICNTL(14); INFOG
+    // is the same on every process, so every process takes the same decision.
+    const int code = mumps->GetINFOG()[0];
+    return code == -8 || code == -9 || code == -14 || code == -15 || code == -17 || code == -20;
+  }
+
+
+
+  void
+  MumpsFactorization::analyse(const dealii::TrilinosWrappers::SparseMatrix &matrix)
+  {
+    analysed = nullptr; // until the new analysis has passed its checks
+    solver.reset();     // before the problem it refers to
+    problem = std::make_unique<Epetra_LinearProblem>();
+    problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
+    Amesos factory;
+    solver.reset(factory.Create("Amesos_Mumps", *problem));
+    if (!solver)
+      throw SolverFailure(what + ": Trilinos Amesos was built without MUMPS");
+    // Amesos hands ICNTL to MUMPS in the symbolic factorization only.
+    if (auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get()))
+      mumps->SetICNTL(14, workspace_relaxation);
+    check(solver->SymbolicFactorization(), "symbolic factorization");
+    check_memory(matrix.get_mpi_communicator());
+    analysed = &matrix.trilinos_matrix();
+  }
+
+
+
   void
   MumpsFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &matrix)
   {
     done = false;
-    if (analysed != &matrix.trilinos_matrix())
+    for (unsigned int attempt = 0;; ++attempt)
       {
-        analysed = nullptr; // until the new analysis has passed its checks
-        solver.reset();     // before the problem it refers to
-        problem = std::make_unique<Epetra_LinearProblem>();
-        problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
-        Amesos factory;
-        solver.reset(factory.Create("Amesos_Mumps", *problem));
-        if (!solver)
-          throw SolverFailure(what + ": Trilinos Amesos was built without MUMPS");
-        check(solver->SymbolicFactorization(), "symbolic factorization");
-        check_memory(matrix.get_mpi_communicator());
-        analysed = &matrix.trilinos_matrix();
+        if (analysed != &matrix.trilinos_matrix())
+          analyse(matrix);
+        const int status = solver->NumericFactorization();
+        if (status != 0 && out_of_workspace() && attempt < max_workspace_retries)
+          {
+            workspace_relaxation = 2 * std::max(workspace_relaxation, 20);
+            ++retries;
+            analysed = nullptr;
+            continue;
+          }
+        check(status, "factorization");
+        break;
       }
-    check(solver->NumericFactorization(), "factorization");
     done = true;
   }
 

@@ -35,8 +35,8 @@ namespace porofrac
         , parameters(parameters)
     {
       number_unknowns({});
-      mean_pore_volume =
-        total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
+      virtual_pore_volume =
+        1e-3 * total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       linear_solver = create_serial_linear_solver(parameters.linear_solver, "Flow/Linear solver");
       storage       = std::make_shared<GridPorosity<dim>>(grid);
       state.assign(grid.n_nodes(), {{0., 0.}});
@@ -246,7 +246,8 @@ namespace porofrac
           const double PV = pore_volume(s, i, dPV), PV_old = old_pore_volume[i];
           if (PV == 0 && PV_old == 0)
             {
-              massless.push_back(i);
+              if (J)
+                massless.push_back(i);
               // Massless node where the non-wetting phase is absent (with the entry slope active
               // or the capillary bound), where the phase's mobilities can all vanish: a
               // Jacobian-only virtual pore volume keeps its rows non-singular. Above the absent
@@ -259,7 +260,7 @@ namespace porofrac
               if (!(J && absent))
                 continue;
               const double dS  = slope(rocks[grid.nodes[i].rock], pc);
-              const double PVv = 1e-3 * mean_pore_volume;
+              const double PVv = virtual_pore_volume;
               J->add(dof(i, 1), dof(i, 1), PVv * dS);
               J->add(dof(i, 1), dof(i, 0), -PVv * dS);
               J->add(dof(i, 0), dof(i, 1), -PVv * dS);
@@ -348,7 +349,7 @@ namespace porofrac
       const double    S    = rock.saturation->saturation(s[i][1] - s[i][0]);
       if (1. - S >= absent_saturation || rock.mobility(0, S) != 0)
         return;
-      const double PVv = std::max(grid.pore_volume(i), 1e-3 * mean_pore_volume);
+      const double PVv = std::max(grid.pore_volume(i), virtual_pore_volume);
       J.add(dof(i, 0), dof(i, 0), PVv / rock.saturation->pressure_scale());
     }
 
@@ -366,7 +367,7 @@ namespace porofrac
           if (J.diag_element(dof(i, phase)) == 0)
             J.add(dof(i, phase),
                   dof(i, phase),
-                  1e-3 * mean_pore_volume / rocks[grid.nodes[i].rock].saturation->pressure_scale());
+                  virtual_pore_volume / rocks[grid.nodes[i].rock].saturation->pressure_scale());
     }
 
     template <int dim>

@@ -25,6 +25,11 @@ namespace porofrac
    * process, summed over the processes of each machine) is compared with the memory the machine
    * has available (MemAvailable of /proc/meminfo, or set_memory_limit()): a factorization that
    * would not fit throws SolverFailure before it starts, instead of exhausting the machine.
+   *
+   * A factorization that runs out of MUMPS's workspace (INFOG(1) = -8, -9, -14, -15, -17 or
+   * -20: more pivoting than the analysis foresaw, typically on new values of the analysed
+   * pattern) is analysed and factorized again with the workspace relaxation ICNTL(14) doubled,
+   * at most max_workspace_retries times; the larger relaxation is kept for later analyses.
    */
   class MumpsFactorization
   {
@@ -64,7 +69,32 @@ namespace porofrac
       return done;
     }
 
+    /// ICNTL(14) of the next analysis: the percentage by which MUMPS enlarges the workspace
+    /// the analysis estimates (MUMPS's default 20).
+    void
+    set_workspace_relaxation(const int percent)
+    {
+      workspace_relaxation = percent;
+    }
+
+    /// Factorizations repeated so far with a larger workspace relaxation.
+    unsigned int
+    workspace_retries() const
+    {
+      return retries;
+    }
+
+    static constexpr unsigned int max_workspace_retries = 3;
+
   private:
+    /// A new symbolic analysis of @p matrix with the current workspace relaxation.
+    void
+    analyse(const dealii::TrilinosWrappers::SparseMatrix &matrix);
+
+    /// Whether the last MUMPS call failed for want of workspace (a larger ICNTL(14) helps).
+    bool
+    out_of_workspace() const;
+
     void
     check(const int status, const char *step) const;
 
@@ -77,10 +107,12 @@ namespace porofrac
     std::unique_ptr<Epetra_LinearProblem> problem;
     std::unique_ptr<Amesos_BaseSolver>    solver;
     /// The Epetra matrix of the symbolic analysis (deal.II may replace it on a deep copy).
-    const void *analysed        = nullptr;
-    bool        done            = false;
-    double      memory_limit_mb = 0;
-    double      estimate_mb     = 0;
+    const void  *analysed             = nullptr;
+    bool         done                 = false;
+    double       memory_limit_mb      = 0;
+    double       estimate_mb          = 0;
+    int          workspace_relaxation = 20;
+    unsigned int retries              = 0;
   };
 } // namespace porofrac
 

@@ -342,7 +342,9 @@ namespace porofrac
       bool
                    stagnation_fallback_holds(const double mass_defect, const double update) const;
       mutable bool entry_slope_active = false;
-      double       mean_pore_volume   = 0;
+      /// The Jacobian-only pore volume that holds the pressures no equation holds (massless
+      /// nodes, absent phases): 1e-3 times the mean pore volume of the cells.
+      double virtual_pore_volume = 0;
     };
   } // namespace flow
 } // namespace porofrac
