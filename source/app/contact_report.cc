@@ -30,6 +30,9 @@ namespace porofrac
         context.report << "Mechanics: " << solution.statistics.direct_fallbacks
                        << " linear solves fell back from the Krylov solver to the direct solver"
                        << std::endl;
+      if (solution.statistics.direct_workspace_retries > 0)
+        context.report << "Mechanics: " << solution.statistics.direct_workspace_retries
+                       << " MUMPS factorizations repeated with a larger workspace" << std::endl;
       const auto counts = mechanics::count_states(mesh, solution.faces);
       context.report << "Mechanics: faces open " << counts[0] << ", stick " << counts[1]
                      << ", slip " << counts[2] << std::endl;
@@ -92,21 +95,22 @@ namespace porofrac
     summarize_contact_iterations(const mechanics::ContactParameters &prm,
                                  const mechanics::ContactStatistics &s)
     {
-      io::Json m                      = io::Json::object();
-      m["solver"]                     = prm.method;
-      m["initial_guess"]              = std::string(prm.stick_guess ? "stick" : "open");
-      m["c"]                          = prm.c;
-      m["nonlinear_iterations"]       = s.iterations;
-      m["converged"]                  = s.converged;
-      m["residuals"]                  = s.residual_history;
-      m["residuals_initial_relative"] = s.initial_relative_history;
-      m["steps"]                      = s.step_history;
-      m["line_search_backtracks"]     = s.backtracks;
-      m["cycles_detected"]            = s.cycles_detected;
-      m["factorizations"]             = s.factorizations;
-      m["reused_factorizations"]      = s.reused_factorizations;
-      m["linear_iterations"]          = s.linear_iterations;
-      m["linear_direct_fallbacks"]    = s.direct_fallbacks;
+      io::Json m                           = io::Json::object();
+      m["solver"]                          = prm.method;
+      m["initial_guess"]                   = std::string(prm.stick_guess ? "stick" : "open");
+      m["c"]                               = prm.c;
+      m["nonlinear_iterations"]            = s.iterations;
+      m["converged"]                       = s.converged;
+      m["residuals"]                       = s.residual_history;
+      m["residuals_initial_relative"]      = s.initial_relative_history;
+      m["steps"]                           = s.step_history;
+      m["line_search_backtracks"]          = s.backtracks;
+      m["cycles_detected"]                 = s.cycles_detected;
+      m["factorizations"]                  = s.factorizations;
+      m["reused_factorizations"]           = s.reused_factorizations;
+      m["linear_iterations"]               = s.linear_iterations;
+      m["linear_direct_fallbacks"]         = s.direct_fallbacks;
+      m["linear_direct_workspace_retries"] = s.direct_workspace_retries;
       add_iteration_history(s, m);
       return m;
     }

@@ -155,10 +155,11 @@ namespace porofrac
           pm.distributed_contact() ? linear[0] : pm.mechanics.n_factorizations();
         if (pm.distributed_contact())
           {
-            m["distributed"]             = true;
-            m["linear_solver"]           = pm.contact_linear_solver();
-            m["linear_iterations"]       = linear[1];
-            m["linear_direct_fallbacks"] = linear[2];
+            m["distributed"]                     = true;
+            m["linear_solver"]                   = pm.contact_linear_solver();
+            m["linear_iterations"]               = linear[1];
+            m["linear_direct_fallbacks"]         = linear[2];
+            m["linear_direct_workspace_retries"] = linear[3];
           }
         m["converged"] = true;
         m["n_open"]    = c[0];

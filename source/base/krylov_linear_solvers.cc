@@ -161,7 +161,8 @@ namespace porofrac
             stats.iterations += control.last_step();
             ++stats.direct_fallbacks;
             fallback.factorize(*matrix);
-            factors_of_matrix = true;
+            stats.direct_workspace_retries = fallback.workspace_retries();
+            factors_of_matrix              = true;
             fallback.solve(x, b);
             return;
           }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 #include <Amesos.h>
@@ -45,6 +46,31 @@ namespace porofrac
         text << std::fixed << std::setprecision(megabytes < 1 ? 3 : 0) << megabytes << " MB";
       return text.str();
     }
+
+    /// Holds back what Amesos writes on std::cerr while it lives: Amesos prints MUMPS's error
+    /// codes on every failed call, also for a factorization the workspace retry then repeats
+    /// with success; check() reports a failure that stays.
+    class AmesosErrorStream
+    {
+    public:
+      AmesosErrorStream()
+          : previous(std::cerr.rdbuf(held.rdbuf()))
+      {
+      }
+
+      ~AmesosErrorStream()
+      {
+        std::cerr.rdbuf(previous);
+      }
+
+      AmesosErrorStream(const AmesosErrorStream &) = delete;
+      AmesosErrorStream &
+      operator=(const AmesosErrorStream &) = delete;
+
+    private:
+      std::ostringstream held;
+      std::streambuf    *previous;
+    };
   } // namespace
 
 
@@ -77,6 +103,8 @@ namespace porofrac
                     std::to_string(problem->GetMatrix()->NumGlobalRows());
         else if (infog[0] == -9 || infog[0] == -8 || infog[0] == -13)
           reason += ": MUMPS ran out of its working memory";
+        else
+          reason += ", INFOG(2) = " + std::to_string(infog[1]);
       }
     throw SolverFailure(what + ": MUMPS " + step + " failed (" + reason + ")");
   }
@@ -138,7 +166,12 @@ namespace porofrac
     // Amesos hands ICNTL to MUMPS in the symbolic factorization only.
     if (auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get()))
       mumps->SetICNTL(14, workspace_relaxation);
-    check(solver->SymbolicFactorization(), "symbolic factorization");
+    int status = 0;
+    {
+      const AmesosErrorStream quiet;
+      status = solver->SymbolicFactorization();
+    }
+    check(status, "symbolic factorization");
     check_memory(matrix.get_mpi_communicator());
     analysed = &matrix.trilinos_matrix();
   }
@@ -153,7 +186,11 @@ namespace porofrac
       {
         if (analysed != &matrix.trilinos_matrix())
           analyse(matrix);
-        const int status = solver->NumericFactorization();
+        int status = 0;
+        {
+          const AmesosErrorStream quiet;
+          status = solver->NumericFactorization();
+        }
         if (status != 0 && out_of_workspace() && attempt < max_workspace_retries)
           {
             workspace_relaxation = 2 * std::max(workspace_relaxation, 20);
@@ -176,6 +213,11 @@ namespace porofrac
     problem->SetLHS(&x.trilinos_vector());
     problem->SetRHS(const_cast<Epetra_MultiVector *>(
       static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
-    check(solver->Solve(), "solve");
+    int status = 0;
+    {
+      const AmesosErrorStream quiet;
+      status = solver->Solve();
+    }
+    check(status, "solve");
   }
 } // namespace porofrac

@@ -21,6 +21,7 @@ namespace porofrac
       initialize(const dealii::TrilinosWrappers::SparseMatrix &matrix) override
       {
         lu.factorize(matrix);
+        stats.direct_workspace_retries = lu.workspace_retries();
       }
 
       void

@@ -84,6 +84,7 @@ namespace porofrac
         linear_totals[0] += s.factorizations;
         linear_totals[1] += s.linear_iterations;
         linear_totals[2] += s.direct_fallbacks;
+        linear_totals[3] += s.direct_workspace_retries;
       };
       if (distributed)
         {

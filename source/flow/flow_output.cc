@@ -65,8 +65,9 @@ namespace porofrac
       s["iterations"] = statistics.iterations;
       s["iterations_per_solve"] =
         statistics.solves > 0 ? double(statistics.iterations) / statistics.solves : 0.;
-      s["direct_fallbacks"] = statistics.direct_fallbacks;
-      s["reused_setups"]    = statistics.reused_setups;
+      s["direct_fallbacks"]         = statistics.direct_fallbacks;
+      s["reused_setups"]            = statistics.reused_setups;
+      s["direct_workspace_retries"] = statistics.direct_workspace_retries;
       return s;
     }
 
@@ -77,21 +78,25 @@ namespace porofrac
       w.put("flow linear iterations", static_cast<unsigned int>(statistics.iterations));
       w.put("flow linear direct fallbacks", static_cast<unsigned int>(statistics.direct_fallbacks));
       w.put("flow linear reused set-ups", static_cast<unsigned int>(statistics.reused_setups));
+      w.put("flow linear direct workspace retries",
+            static_cast<unsigned int>(statistics.direct_workspace_retries));
     }
 
     LinearSolverStatistics
     load_linear_statistics(io::CheckpointReader &r)
     {
-      unsigned int solves = 0, iterations = 0, fallbacks = 0, reused = 0;
+      unsigned int solves = 0, iterations = 0, fallbacks = 0, reused = 0, retries = 0;
       r.get("flow linear solves", solves);
       r.get("flow linear iterations", iterations);
       r.get("flow linear direct fallbacks", fallbacks);
       r.get("flow linear reused set-ups", reused);
+      r.get("flow linear direct workspace retries", retries);
       LinearSolverStatistics statistics;
-      statistics.solves           = solves;
-      statistics.iterations       = iterations;
-      statistics.direct_fallbacks = fallbacks;
-      statistics.reused_setups    = reused;
+      statistics.solves                   = solves;
+      statistics.iterations               = iterations;
+      statistics.direct_fallbacks         = fallbacks;
+      statistics.reused_setups            = reused;
+      statistics.direct_workspace_retries = retries;
       return statistics;
     }
 
@@ -100,6 +105,9 @@ namespace porofrac
                          const LinearSolverStatistics &statistics,
                          std::ostream                 &report)
     {
+      if (statistics.direct_workspace_retries > 0)
+        report << "Flow: MUMPS factorizations repeated with a larger workspace: "
+               << statistics.direct_workspace_retries << std::endl;
       if (statistics.iterations == 0)
         return;
       const double per_solve = double(statistics.iterations) / statistics.solves;

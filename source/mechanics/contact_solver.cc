@@ -447,8 +447,10 @@ namespace porofrac
       stats.reused_factorizations = now.reused_factorizations - start.reused_factorizations;
       stats.linear_iterations     = now.linear_iterations - start.linear_iterations;
       stats.direct_fallbacks      = now.direct_fallbacks - start.direct_fallbacks;
-      stats.time_factorization    = now.time_factorization - start.time_factorization;
-      stats.time_solves           = now.time_solves - start.time_solves;
+      stats.direct_workspace_retries =
+        now.direct_workspace_retries - start.direct_workspace_retries;
+      stats.time_factorization = now.time_factorization - start.time_factorization;
+      stats.time_solves        = now.time_solves - start.time_solves;
     }
 
 

@@ -101,6 +101,7 @@ namespace porofrac
           factorized      = true;
           factorized_rows = rows;
           ++this->stats.factorizations;
+          this->stats.direct_workspace_retries = lu.workspace_retries();
           this->stats.time_factorization += clock.wall_time();
         }
 

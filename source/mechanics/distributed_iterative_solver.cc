@@ -104,6 +104,8 @@ namespace porofrac
                        << " GB)" << std::endl;
             }
           this->stats.linear_iterations += control.last_step();
+          this->stats.direct_workspace_retries =
+            fallback.workspace_retries() + preconditioner->workspace_retries();
           this->stats.time_solves += clock.wall_time();
         }
 

@@ -36,6 +36,8 @@ namespace porofrac
     unsigned long direct_fallbacks = 0;
     /// Solves that used the set-up (factors, preconditioner) of an unchanged matrix again.
     unsigned long reused_setups = 0;
+    /// MUMPS factorizations repeated with a larger workspace (MumpsFactorization).
+    unsigned long direct_workspace_retries = 0;
 
     LinearSolverStatistics &
     operator+=(const LinearSolverStatistics &other)
@@ -44,6 +46,7 @@ namespace porofrac
       iterations += other.iterations;
       direct_fallbacks += other.direct_fallbacks;
       reused_setups += other.reused_setups;
+      direct_workspace_retries += other.direct_workspace_retries;
       return *this;
     }
   };

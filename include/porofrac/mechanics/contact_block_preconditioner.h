@@ -55,6 +55,13 @@ namespace porofrac
       void
       vmult(VectorType &dst, const VectorType &src) const;
 
+      /// Factorizations of the Schur complement repeated with a larger MUMPS workspace.
+      unsigned int
+      workspace_retries() const
+      {
+        return schur_lu.workspace_retries();
+      }
+
     private:
       /// The rigid-body modes of the owned displacement dofs, mode by mode.
       void

@@ -27,10 +27,12 @@ namespace porofrac
       /// Solves done by GMRES preconditioned by older factors instead of a factorization.
       unsigned int reused_factorizations = 0;
       /// Krylov iterations of iterative solvers, and their steps solved directly instead.
-      unsigned int linear_iterations  = 0;
-      unsigned int direct_fallbacks   = 0;
-      double       time_factorization = 0;
-      double       time_solves        = 0;
+      unsigned int linear_iterations = 0;
+      unsigned int direct_fallbacks  = 0;
+      /// MUMPS factorizations repeated with a larger workspace (MumpsFactorization).
+      unsigned int direct_workspace_retries = 0;
+      double       time_factorization       = 0;
+      double       time_solves              = 0;
       /// Set-up that depends on the mesh only (Cholesky of K and W for the Schur complement).
       double time_cholesky = 0, time_form_W = 0;
     };

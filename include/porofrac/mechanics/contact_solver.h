@@ -51,6 +51,8 @@ namespace porofrac
       /// Krylov iterations of an iterative linear solver over this solve, and its steps solved
       /// directly because GMRES did not converge.
       unsigned int linear_iterations = 0, direct_fallbacks = 0;
+      /// MUMPS factorizations of this solve repeated with a larger workspace.
+      unsigned int direct_workspace_retries = 0;
       /// Time in computing the face rows, factorizing, triangular solves, and residual and
       /// line-search evaluations; set-up of the Schur complement (first solve only).
       double time_contact_rows = 0, time_factorization = 0, time_solves = 0, time_residuals = 0,
