@@ -194,7 +194,10 @@ namespace porofrac
           , mesh(mesh)
           , context(context)
           , writer(context.writes_files())
-          , model(flow::make_flow_model<dim>(parameters.flow, mesh))
+          , model([&] {
+            TimerOutput::Scope t(context.timer, "Flow: grid and solver set-up");
+            return flow::make_flow_model<dim>(parameters.flow, mesh);
+          }())
           , grid(*model.grid)
           , solver(*model.solver)
           , pvd(context.path("flow.pvd"))
@@ -205,7 +208,10 @@ namespace porofrac
       {
         solver.timer = &context.timer;
         if (context.communicator != MPI_COMM_SELF)
-          solver.distribute(context.communicator, grid.node_owners(cell_owner));
+          {
+            TimerOutput::Scope t(context.timer, "Flow: distribution");
+            solver.distribute(context.communicator, grid.node_owners(cell_owner));
+          }
         report_flow_grid(grid, solver, context);
         totals.initial_volumes = solver.phase_volumes(solver.state);
       }
