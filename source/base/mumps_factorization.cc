@@ -71,6 +71,15 @@ namespace porofrac
       std::ostringstream held;
       std::streambuf    *previous;
     };
+
+    /// The status of the Amesos call @p call, made without Amesos's error report.
+    template <typename Call>
+    int
+    quietly(const Call &call)
+    {
+      const AmesosErrorStream quiet;
+      return call();
+    }
   } // namespace
 
 
@@ -166,12 +175,7 @@ namespace porofrac
     // Amesos hands ICNTL to MUMPS in the symbolic factorization only.
     if (auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get()))
       mumps->SetICNTL(14, workspace_relaxation);
-    int status = 0;
-    {
-      const AmesosErrorStream quiet;
-      status = solver->SymbolicFactorization();
-    }
-    check(status, "symbolic factorization");
+    check(quietly([this] { return solver->SymbolicFactorization(); }), "symbolic factorization");
     check_memory(matrix.get_mpi_communicator());
     analysed = &matrix.trilinos_matrix();
   }
@@ -186,11 +190,7 @@ namespace porofrac
       {
         if (analysed != &matrix.trilinos_matrix())
           analyse(matrix);
-        int status = 0;
-        {
-          const AmesosErrorStream quiet;
-          status = solver->NumericFactorization();
-        }
+        const int status = quietly([this] { return solver->NumericFactorization(); });
         if (status != 0 && out_of_workspace() && attempt < max_workspace_retries)
           {
             workspace_relaxation = 2 * std::max(workspace_relaxation, 20);
@@ -213,11 +213,6 @@ namespace porofrac
     problem->SetLHS(&x.trilinos_vector());
     problem->SetRHS(const_cast<Epetra_MultiVector *>(
       static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));
-    int status = 0;
-    {
-      const AmesosErrorStream quiet;
-      status = solver->Solve();
-    }
-    check(status, "solve");
+    check(quietly([this] { return solver->Solve(); }), "solve");
   }
 } // namespace porofrac
