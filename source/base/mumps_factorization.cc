@@ -3,11 +3,11 @@
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mumps_factorization.h>
+#include <porofrac/base/quiet_standard_error.h>
 
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
-#include <iostream>
 #include <sstream>
 
 #include <Amesos.h>
@@ -47,37 +47,14 @@ namespace porofrac
       return text.str();
     }
 
-    /// Holds back what Amesos writes on std::cerr while it lives: Amesos prints MUMPS's error
-    /// codes on every failed call, also for a factorization the workspace retry then repeats
-    /// with success; check() reports a failure that stays.
-    class AmesosErrorStream
-    {
-    public:
-      AmesosErrorStream()
-          : previous(std::cerr.rdbuf(held.rdbuf()))
-      {
-      }
-
-      ~AmesosErrorStream()
-      {
-        std::cerr.rdbuf(previous);
-      }
-
-      AmesosErrorStream(const AmesosErrorStream &) = delete;
-      AmesosErrorStream &
-      operator=(const AmesosErrorStream &) = delete;
-
-    private:
-      std::ostringstream held;
-      std::streambuf    *previous;
-    };
-
-    /// The status of the Amesos call @p call, made without Amesos's error report.
+    /// The status of the Amesos call @p call, made without Amesos's report of MUMPS's error
+    /// codes on std::cerr: it comes on every failed call, also for a factorization the
+    /// workspace retry then repeats with success; check() reports a failure that stays.
     template <typename Call>
     int
     quietly(const Call &call)
     {
-      const AmesosErrorStream quiet;
+      const QuietStandardError quiet;
       return call();
     }
   } // namespace

@@ -4,12 +4,11 @@
 #include <deal.II/lac/vector.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/quiet_standard_error.h>
 #include <porofrac/io/expression.h>
 #include <porofrac/io/text.h>
 
 #include <cmath>
-#include <iostream>
-#include <sstream>
 
 namespace porofrac
 {
@@ -69,25 +68,6 @@ namespace porofrac
         const std::vector<std::string> expressions;
         const std::string              parameter;
         const std::string              extra_variable;
-      };
-
-      /// Holds back what is written to std::cerr while it lives: deal.II prints muparser's
-      /// diagnostics there before throwing, and the InputError says it better.
-      class QuietStandardError
-      {
-      public:
-        QuietStandardError()
-            : saved(std::cerr.rdbuf(sink.rdbuf()))
-        {
-        }
-        ~QuietStandardError()
-        {
-          std::cerr.rdbuf(saved);
-        }
-
-      private:
-        std::ostringstream sink;
-        std::streambuf    *saved;
       };
     } // namespace
 
