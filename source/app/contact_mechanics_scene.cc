@@ -25,9 +25,7 @@ namespace porofrac
         write_fracture_outputs(solution, context);
         if (context.output_format == "none")
           return;
-        mechanics::write_displacement(problem,
-                                      context.path("displacement." + context.output_format),
-                                      context.output_format);
+        mechanics::write_displacement(problem, context.path("displacement"), context.output_format);
       }
     } // namespace
 

@@ -38,12 +38,17 @@ namespace porofrac
           }
       }
 
-      /// The cell, fracture and displacement files of the current coupled state.
+      /**
+       * The cell, fracture and displacement files of the current coupled state: every process
+       * writes its cells of the cell and displacement files (@p pieces), rank 0 the fracture
+       * file. Returns the cell file a .pvd lists.
+       */
       template <int dim>
-      void
+      std::string
       write_fields(const coupling::Poromechanics<dim> &pm,
                    const std::string                  &basename,
-                   const std::string                  &format)
+                   const std::string                  &format,
+                   const geometry::OutputPieces       &pieces)
       {
         const auto          &grid  = *pm.flow.grid;
         const auto          &mesh  = pm.mechanics.get_mesh();
@@ -57,9 +62,10 @@ namespace porofrac
           }
         cells.emplace_back("p_E", p_E);
         cells.emplace_back("porosity", porosity);
-        geometry::write_cell_fields(mesh, basename, format, cells);
+        const std::string file = geometry::write_cell_fields(mesh, basename, format, cells, pieces);
+        mechanics::write_displacement(pm.mechanics, basename + "_displacement", format, pieces);
 
-        if (grid.n_fracture_cells > 0)
+        if (grid.n_fracture_cells > 0 && pieces.rank == 0)
           {
             geometry::FractureFields faces = flow::fracture_fields(*pm.flow.solver, grid);
             faces.emplace_back("p_E", std::vector<double>());
@@ -68,7 +74,7 @@ namespace porofrac
             mechanics::append_contact_fields(pm.mechanics, faces);
             geometry::write_fracture_cells(mesh, basename + "_fractures." + format, format, faces);
           }
-        mechanics::write_displacement(pm.mechanics, basename + "_displacement." + format, format);
+        return file;
       }
 
       /// Iteration counts summed over a run (every attempt, failed ones included).
@@ -275,9 +281,11 @@ namespace porofrac
         coupling::CoupledStepReport                                step_report;
         RunTotals                                                  totals;
         io::PvdWriter                                              pvd;
-        int            last_written = -1; // field files' step
-        Checkpointing  checkpoints;
-        std::ofstream *fractures = nullptr, *history = nullptr;
+        int last_written = -1; // field files' step
+        /// Which cells of the field files this process writes.
+        const geometry::OutputPieces pieces;
+        Checkpointing                checkpoints;
+        std::ofstream               *fractures = nullptr, *history = nullptr;
       };
 
 
@@ -313,6 +321,7 @@ namespace porofrac
                context.communicator,
                distributed_mech.get())
           , pvd(context.path("poromechanics.pvd"))
+          , pieces(geometry::replicated_mesh_pieces(cell_owner, context.communicator))
           , checkpoints(context, "poromechanics", stepper, pvd, {"history.csv", "fractures.csv"})
       {
         // Distributed: the flow's Newton systems are shared, the contact problem is solved by
@@ -432,13 +441,15 @@ namespace porofrac
       void
       CoupledRun<dim>::output(const unsigned int step, const double time)
       {
-        if (context.output_format == "none" || !context.writes_files())
+        if (context.output_format == "none")
           return;
         TimerOutput::Scope timer(context.timer, "Coupling: output");
         const std::string  name = "poromechanics-" + Utilities::int_to_string(step, 5);
-        write_fields(pm, context.path(name), context.output_format);
-        pvd.add(time, name + "." + context.output_format);
+        const std::string  file =
+          write_fields(pm, context.path(name), context.output_format, pieces);
         last_written = step;
+        if (context.writes_files())
+          pvd.add(time, file);
       }
 
 

@@ -9,6 +9,7 @@
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/flow/line_samples.h>
 #include <porofrac/flow/model.h>
+#include <porofrac/geometry/mesh_output.h>
 #include <porofrac/io/pvd_writer.h>
 
 #include <algorithm>
@@ -125,7 +126,9 @@ namespace porofrac
         const geometry::CutMesh<dim> &mesh;
         io::RunContext               &context;
         /// Whether this process writes the files (rank 0 of the run's processes).
-        const bool                         writer;
+        const bool writer;
+        /// Which cells of the field files this process writes.
+        const geometry::OutputPieces       pieces;
         flow::FlowModel<dim>               model;
         flow::TpfaGrid<dim>               &grid;
         flow::TwoPhaseSolver<dim>         &solver;
@@ -194,6 +197,7 @@ namespace porofrac
           , mesh(mesh)
           , context(context)
           , writer(context.writes_files())
+          , pieces(geometry::replicated_mesh_pieces(cell_owner, context.communicator))
           , model([&] {
             TimerOutput::Scope t(context.timer, "Flow: grid and solver set-up");
             return flow::make_flow_model<dim>(parameters.flow, mesh);
@@ -290,22 +294,23 @@ namespace porofrac
       void
       FlowRun<dim>::output(const unsigned int step, const double t)
       {
-        if (context.output_format == "none" || !writer)
+        if (context.output_format == "none")
           return;
+        // Every process writes its cells (one piece each, or rank 0 all of them).
         TimerOutput::Scope timer(context.timer, "Flow: output");
         const std::string  name   = "flow-" + Utilities::int_to_string(step, 5);
         const std::string &format = context.output_format;
-        geometry::write_cell_fields(mesh,
-                                    context.path(name),
-                                    format,
-                                    flow::matrix_fields(solver, grid));
+        const std::string  file   = geometry::write_cell_fields(
+          mesh, context.path(name), format, flow::matrix_fields(solver, grid), pieces);
+        last_written = step;
+        if (!writer)
+          return;
         if (grid.n_fracture_cells > 0)
           geometry::write_fracture_cells(mesh,
                                          context.path(name + "_fractures." + format),
                                          format,
                                          flow::fracture_fields(solver, grid));
-        pvd.add(t, name + "." + format);
-        last_written = step;
+        pvd.add(t, file);
       }
 
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/base/utilities.h>
+
 #include <deal.II/numerics/data_out.h>
 
 #include <porofrac/base/exceptions.h>
@@ -8,6 +8,7 @@
 #include <porofrac/geometry/mesh_quality.h>
 #include <porofrac/geometry/simplex_tools.h>
 
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 
@@ -154,22 +155,97 @@ namespace porofrac
 
 
     template <int dim>
-    void
+    std::string
     write_cell_fields(const CutMesh<dim> &mesh,
                       const std::string  &basename,
                       const std::string  &format,
-                      const CellFields   &fields)
+                      const CellFields   &fields,
+                      const OutputPieces &pieces)
     {
       if (format == "none")
-        return;
-      DoFHandler<dim> dof_handler(mesh.triangulation);
-      dof_handler.distribute_dofs(FE_SimplexP<dim>(1));
+        return "";
+      // Cell data need no DoFHandler: the triangulation carries the patches.
       DataOut<dim> data_out;
-      data_out.attach_dof_handler(dof_handler);
+      data_out.attach_triangulation(mesh.triangulation);
       for (const auto &[name, values] : fields)
         data_out.add_data_vector(values, name, DataOut<dim>::type_cell_data);
-      data_out.build_patches(mesh.mapping());
-      write_data_out(data_out, basename + "." + format, format);
+      return write_field_file(
+        data_out, mesh.triangulation, mesh.mapping(), 1, basename, format, pieces);
+    }
+
+
+
+    OutputPieces
+    replicated_mesh_pieces(const std::vector<unsigned int> &cell_owner, const MPI_Comm communicator)
+    {
+      OutputPieces pieces;
+      pieces.rank    = Utilities::MPI::this_mpi_process(communicator);
+      pieces.n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+      if (pieces.n_ranks > 1)
+        pieces.cell_owner = cell_owner;
+      return pieces;
+    }
+
+
+
+    template <int dim>
+    std::string
+    write_field_file(DataOut<dim>             &data_out,
+                     const Triangulation<dim> &triangulation,
+                     const Mapping<dim>       &mapping,
+                     const unsigned int        n_subdivisions,
+                     const std::string        &basename,
+                     const std::string        &format,
+                     const OutputPieces       &pieces)
+    {
+      const std::string name = std::filesystem::path(basename).filename().string();
+      if (!pieces.split(format))
+        {
+          if (pieces.rank == 0)
+            {
+              data_out.build_patches(mapping, n_subdivisions);
+              write_data_out(data_out, basename + "." + format, format);
+            }
+          return name + "." + format;
+        }
+      Vector<float> subdomain(triangulation.n_active_cells());
+      if (pieces.own_cells_only)
+        subdomain = static_cast<float>(pieces.rank);
+      else
+        {
+          const auto        &owner = pieces.cell_owner;
+          const unsigned int rank  = pieces.rank;
+          AssertThrow(owner.size() == triangulation.n_active_cells(),
+                      ExcMessage("the cell owners do not fit the mesh"));
+          for (unsigned int c = 0; c < owner.size(); ++c)
+            subdomain[c] = static_cast<float>(owner[c]);
+          data_out.set_cell_selection(
+            [&owner, rank](const typename Triangulation<dim>::cell_iterator &cell) {
+              return cell->is_active() && owner[cell->active_cell_index()] == rank;
+            });
+        }
+      data_out.add_data_vector(subdomain, "subdomain", DataOut<dim>::type_cell_data);
+      data_out.build_patches(mapping, n_subdivisions);
+      const auto piece = [&](const unsigned int r) {
+        return name + "_" + Utilities::int_to_string(r, 4) + "." + format;
+      };
+      const std::string directory = std::filesystem::path(basename).parent_path().string();
+      const auto        path      = [&](const std::string &file) {
+        return directory.empty() ? file : directory + "/" + file;
+      };
+      write_data_out(data_out, path(piece(pieces.rank)), format);
+      if (format != "vtu")
+        return "";
+      if (pieces.rank == 0)
+        {
+          std::vector<std::string> files;
+          for (unsigned int r = 0; r < pieces.n_ranks; ++r)
+            files.push_back(piece(r));
+          std::ofstream record(path(name + ".pvtu"));
+          check_input(bool(record), "Output/Directory", "cannot write '" + name + ".pvtu'");
+          data_out.write_pvtu_record(record, files);
+        }
+      return name + ".pvtu";
     }
 
 
@@ -240,16 +316,34 @@ namespace porofrac
     write_fracture_edges<2>(const CutMesh<2> &, const std::string &, const std::string &);
     template void
     write_fracture_edges<3>(const CutMesh<3> &, const std::string &, const std::string &);
-    template void
+    template std::string
     write_cell_fields<2>(const CutMesh<2> &,
                          const std::string &,
                          const std::string &,
-                         const CellFields &);
-    template void
+                         const CellFields &,
+                         const OutputPieces &);
+    template std::string
     write_cell_fields<3>(const CutMesh<3> &,
                          const std::string &,
                          const std::string &,
-                         const CellFields &);
+                         const CellFields &,
+                         const OutputPieces &);
+    template std::string
+    write_field_file<2>(DataOut<2> &,
+                        const Triangulation<2> &,
+                        const Mapping<2> &,
+                        const unsigned int,
+                        const std::string &,
+                        const std::string &,
+                        const OutputPieces &);
+    template std::string
+    write_field_file<3>(DataOut<3> &,
+                        const Triangulation<3> &,
+                        const Mapping<3> &,
+                        const unsigned int,
+                        const std::string &,
+                        const std::string &,
+                        const OutputPieces &);
     template void
     write_mesh<2>(const CutMesh<2> &, const std::string &, const std::string &);
     template void

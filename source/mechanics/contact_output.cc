@@ -166,9 +166,10 @@ namespace porofrac
 
     template <int dim>
     void
-    write_displacement(const ContactProblem<dim> &problem,
-                       const std::string         &filename,
-                       const std::string         &format)
+    write_displacement(const ContactProblem<dim>    &problem,
+                       const std::string            &basename,
+                       const std::string            &format,
+                       const geometry::OutputPieces &pieces)
     {
       DataOut<dim> data_out;
       data_out.attach_dof_handler(problem.get_dof_handler());
@@ -178,8 +179,9 @@ namespace porofrac
                                std::vector<std::string>(dim, "displacement"),
                                DataOut<dim>::type_dof_data,
                                interpretation);
-      data_out.build_patches(problem.get_mesh().mapping(), 2);
-      geometry::write_data_out(data_out, filename, format);
+      const auto &mesh = problem.get_mesh();
+      geometry::write_field_file(
+        data_out, mesh.triangulation, mesh.mapping(), 2, basename, format, pieces);
     }
 
 #define POROFRAC_INSTANTIATE_FRACTURE_FIELDS(dim)                                                        \
@@ -202,7 +204,8 @@ namespace porofrac
                                           const CoupledFaceColumns *);                                   \
   template void write_displacement(const ContactProblem<dim> &,                                          \
                                    const std::string &,                                                  \
-                                   const std::string &);
+                                   const std::string &,                                                  \
+                                   const geometry::OutputPieces &);
     POROFRAC_INSTANTIATE_FRACTURE_FIELDS(2)
     POROFRAC_INSTANTIATE_FRACTURE_FIELDS(3)
 #undef POROFRAC_INSTANTIATE_FRACTURE_FIELDS

@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/geometry/mesh_output.h>
 #include <porofrac/mechanics/coupling_entry.h>
 #include <porofrac/mechanics/distributed_contact_problem.h>
 
@@ -250,31 +251,18 @@ namespace porofrac
                                std::vector<std::string>(dim, "displacement"),
                                DataOut<dim>::type_dof_data,
                                interpretation);
-      Vector<float> subdomain(system.get_distributed_mesh().triangulation.n_active_cells());
-      subdomain = static_cast<float>(rank);
-      data_out.add_data_vector(subdomain, "subdomain");
-      data_out.build_patches(system.get_distributed_mesh().mapping(), 2);
-      DataOutBase::VtkFlags flags;
-      flags.compression_level = DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(flags);
-      const auto piece = [&](const unsigned int r) {
-        return basename + "_" + Utilities::int_to_string(r, 4) + "." + format;
-      };
-      std::ofstream out(directory + "/" + piece(rank));
-      check_input(bool(out), "Output/Directory", "cannot write '" + piece(rank) + "'");
-      if (format == "vtk")
-        data_out.write_vtk(out);
-      else
-        data_out.write_vtu(out);
-      const unsigned int n = Utilities::MPI::n_mpi_processes(system.get_communicator());
-      if (rank == 0 && format == "vtu")
-        {
-          std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < n; ++r)
-            pieces.push_back(piece(r));
-          std::ofstream record(directory + "/" + basename + ".pvtu");
-          data_out.write_pvtu_record(record, pieces);
-        }
+      geometry::OutputPieces pieces;
+      pieces.own_cells_only = true;
+      pieces.rank           = rank;
+      pieces.n_ranks        = Utilities::MPI::n_mpi_processes(system.get_communicator());
+      const auto &mesh      = system.get_distributed_mesh();
+      geometry::write_field_file(data_out,
+                                 mesh.triangulation,
+                                 mesh.mapping(),
+                                 2,
+                                 directory + "/" + basename,
+                                 format,
+                                 pieces);
     }
 
     template class DistributedContactProblem<2>;

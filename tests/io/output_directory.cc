@@ -66,6 +66,12 @@ main()
                            "flow-00003_fractures.vtu",
                            "flow.pvd",
                            "poromechanics-00012_displacement.vtk",
+                           "mesh_fracture_edges.vtu",
+                           "line_diagonal.csv",
+                           "flow-00003.pvtu",
+                           "flow-00003_0001.vtu",
+                           "poromechanics-00012_displacement_0000.vtu",
+                           "poromechanics-00012_displacement.pvtu",
                            "notes.txt",
                            "my_mesh.vtu",
                            "summary.json.bak"})
@@ -79,7 +85,12 @@ main()
   attempt("stale lock", dir);
   std::cout << "  lock released: " << (fs::exists(dir / ".porofrac.lock") ? "no" : "yes")
             << std::endl;
-  for (const char *name : {"notes.txt", "my_mesh.vtu", "summary.json.bak", "summary.json"})
+  for (const char *name : {"notes.txt",
+                           "my_mesh.vtu",
+                           "summary.json.bak",
+                           "summary.json",
+                           "flow-00003_0001.vtu",
+                           "poromechanics-00012_displacement_0000.vtu"})
     std::cout << "  " << name << (fs::exists(dir / name) ? " kept" : " removed") << std::endl;
 
   attempt("empty directory", dir);

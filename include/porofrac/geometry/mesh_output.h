@@ -2,6 +2,10 @@
 #ifndef POROFRAC_GEOMETRY_MESH_OUTPUT_H
 #define POROFRAC_GEOMETRY_MESH_OUTPUT_H
 
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
 
@@ -23,6 +27,52 @@ namespace porofrac
     template <int dim>
     void
     write_data_out(DataOut<dim> &data_out, const std::string &filename, const std::string &format);
+
+    /**
+     * How the processes of a run share a field file. One process, or format "vtk" on a
+     * replicated mesh: rank 0 writes the whole file. Otherwise every process writes its own
+     * cells as the piece BASENAME_RRRR.vtu (or .vtk) with a `subdomain` field, and rank 0 writes
+     * the record BASENAME.pvtu listing the pieces (format "vtu").
+     */
+    struct OutputPieces
+    {
+      /// The process of each active cell of a replicated mesh (by active cell index).
+      std::vector<unsigned int> cell_owner;
+      /// Whether the triangulation holds this process's cells only (a distributed
+      /// triangulation, whose DataOut skips the ghost cells itself).
+      bool         own_cells_only = false;
+      unsigned int rank           = 0;
+      unsigned int n_ranks        = 1;
+
+      /// Whether each process writes a piece of a file in @p format.
+      bool
+      split(const std::string &format) const
+      {
+        return n_ranks > 1 && (format == "vtu" || own_cells_only);
+      }
+    };
+
+    /// The pieces of a run on @p communicator whose processes each hold the whole mesh,
+    /// partitioned by @p cell_owner (empty on one process).
+    OutputPieces
+    replicated_mesh_pieces(const std::vector<unsigned int> &cell_owner,
+                           const MPI_Comm                   communicator);
+
+    /**
+     * Builds the patches of @p data_out (its data vectors attached; @p n_subdivisions per cell,
+     * curved by @p mapping) and writes the field file @p basename (a path without extension)
+     * in @p format ("vtu" or "vtk") as @p pieces says. Every process of the run calls it.
+     * Returns the file a .pvd lists: basename's file name with .vtu, .vtk or .pvtu.
+     */
+    template <int dim>
+    std::string
+    write_field_file(DataOut<dim>             &data_out,
+                     const Triangulation<dim> &triangulation,
+                     const Mapping<dim>       &mapping,
+                     const unsigned int        n_subdivisions,
+                     const std::string        &basename,
+                     const std::string        &format,
+                     const OutputPieces       &pieces);
 
     /// Named per-fracture-face values (one per entry of CutMesh::fracture_faces).
     using FractureFields = std::vector<std::pair<std::string, std::vector<double>>>;
@@ -52,13 +102,15 @@ namespace porofrac
     /// Named per-cell values (indexed by active cell index).
     using CellFields = std::vector<std::pair<std::string, Vector<double>>>;
 
-    /// Writes per-cell fields on the cut mesh to @p basename.vtu (or .vtk, by @p format).
+    /// Writes per-cell fields on the cut mesh as the field file @p basename (write_field_file);
+    /// returns the file a .pvd lists.
     template <int dim>
-    void
+    std::string
     write_cell_fields(const CutMesh<dim> &mesh,
                       const std::string  &basename,
                       const std::string  &format,
-                      const CellFields   &fields);
+                      const CellFields   &fields,
+                      const OutputPieces &pieces = OutputPieces());
 
     /// Writes the cut mesh (material id and circumcentre-inside flag per cell) to
     /// @p basename.vtu/.vtk, its fracture faces to @p basename_fractures.vtu/.vtk and, in 3D,

@@ -111,12 +111,14 @@ namespace porofrac
                               const std::vector<ContactFaceValues<dim>> &values,
                               const CoupledFaceColumns                  *coupled = nullptr);
 
-    /// Writes the P2 displacement (patches of degree 2) to @p filename in @p format (vtu, vtk).
+    /// Writes the P2 displacement (patches of degree 2) as the field file @p basename (a path
+    /// without extension; geometry::write_field_file) in @p format (vtu, vtk).
     template <int dim>
     void
-    write_displacement(const ContactProblem<dim> &problem,
-                       const std::string         &filename,
-                       const std::string         &format);
+    write_displacement(const ContactProblem<dim>    &problem,
+                       const std::string            &basename,
+                       const std::string            &format,
+                       const geometry::OutputPieces &pieces = geometry::OutputPieces());
   } // namespace mechanics
 } // namespace porofrac
 

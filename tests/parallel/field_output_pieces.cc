@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Field files of distributed time-dependent runs (2 MPI processes): every process writes its own
+// cells as a piece, rank 0 the .pvtu record, and the .pvd lists the records. Runs: the short
+// fractured-square drainage (two-phase flow) and the first step of the drying cylinder with the
+// distributed contact problem (poromechanics: cell fields and the P2 displacement). Checked for
+// every file of the .pvd: a .pvtu naming two pieces that exist, each with cells, whose cells
+// add up to the mesh's (summary.json n_cells), and the fields the record declares.
+// mpi: 2
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <porofrac/app/parameters.h>
+#include <porofrac/app/simulator.h>
+#include <porofrac/io/deck.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  std::string
+  text_of(const std::string &file)
+  {
+    std::stringstream text;
+    text << std::ifstream(file).rdbuf();
+    return text.str();
+  }
+
+  /// Every capture of @p pattern's first group in @p text.
+  std::vector<std::string>
+  captures(const std::string &text, const std::string &pattern)
+  {
+    std::vector<std::string> result;
+    const std::regex         re(pattern);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator();
+         ++it)
+      result.push_back((*it)[1]);
+    return result;
+  }
+
+  /// Checks one .pvtu record and its pieces; prints its fields once (@p print_fields).
+  bool
+  check_record(const std::string &dir,
+               const std::string &record,
+               const unsigned int n_cells,
+               const bool         print_fields)
+  {
+    const std::string text   = text_of(dir + "/" + record);
+    const auto        pieces = captures(text, "<Piece Source=\"([^\"]+)\"");
+    unsigned int      sum = 0, empty = 0;
+    for (const auto &piece : pieces)
+      {
+        const auto cells     = captures(text_of(dir + "/" + piece), "NumberOfCells=\"([0-9]+)\"");
+        const unsigned int n = cells.empty() ? 0 : std::stoul(cells.front());
+        sum += n;
+        empty += (n == 0);
+      }
+    if (print_fields)
+      {
+        std::cout << "  fields of " << record << ":";
+        for (const auto &name : captures(text, "<PDataArray[^>]*Name=\"([^\"]+)\""))
+          std::cout << ' ' << name;
+        std::cout << std::endl;
+      }
+    const bool ok = pieces.size() == 2 && empty == 0 && sum == n_cells;
+    if (!ok)
+      std::cout << "  " << record << ": " << pieces.size() << " pieces, " << empty
+                << " without cells, " << sum << " cells of " << n_cells << std::endl;
+    return ok;
+  }
+
+  void
+  run_and_check(const std::string              &deck_file,
+                const std::string              &dir,
+                const std::string              &pvd,
+                const std::vector<std::string> &settings)
+  {
+    dealii::ParameterHandler prm;
+    porofrac::app::declare_all_parameters(prm);
+    porofrac::io::Deck deck(prm);
+    const std::string  path =
+      (std::filesystem::path(__FILE__).parent_path() / deck_file).lexically_normal().string();
+    deck.read(path);
+    for (const auto &s : settings)
+      deck.set(s);
+    for (const char *s :
+         {"Output/Format=vtu", "Output/Verbosity=quiet", "Output/Timer output=none"})
+      deck.set(s);
+    std::ostringstream report;
+    const int          dim = prm.get_integer("Dimension");
+    if (dim == 2)
+      porofrac::app::run_scene<2>(prm, path, dir, report);
+    else
+      porofrac::app::run_scene<3>(prm, path, dir, report);
+    // The other process may still be closing its last piece.
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    const auto n_cells_text    = captures(text_of(dir + "/summary.json"), "\"n_cells\": *([0-9]+)");
+    const unsigned int n_cells = n_cells_text.empty() ? 0 : std::stoul(n_cells_text.front());
+    const auto         files   = captures(text_of(dir + "/" + pvd), "file=\"([^\"]+)\"");
+    unsigned int       good = 0, displacement_good = 0, n_displacement = 0;
+    for (unsigned int i = 0; i < files.size(); ++i)
+      {
+        good += files[i].size() > 5 && files[i].substr(files[i].size() - 5) == ".pvtu" &&
+                check_record(dir, files[i], n_cells, i == 0);
+        const std::string displacement =
+          files[i].substr(0, files[i].size() - 5) + "_displacement.pvtu";
+        if (std::filesystem::exists(dir + "/" + displacement))
+          {
+            ++n_displacement;
+            displacement_good += check_record(dir, displacement, n_cells, i == 0);
+          }
+      }
+    std::cout << deck_file << ": " << files.size() << " files in " << pvd << ", " << good
+              << " records of two pieces with all " << n_cells << " cells";
+    if (n_displacement > 0)
+      std::cout << "; displacement: " << displacement_good << " of " << n_displacement;
+    std::cout << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  run_and_check("../flow/fractured_square_drainage_short.prm", "flow-out", "flow.pvd", {});
+  run_and_check("drying_cylinder_first_step_distributed_contact.prm",
+                "coupled-out",
+                "poromechanics.pvd",
+                {});
+}
