@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/rtree.h>
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/flow/line_samples.h>
 
+#include <algorithm>
+#include <iterator>
+#include <memory>
 #include <regex>
 #include <set>
 
@@ -104,9 +109,42 @@ namespace porofrac
     std::vector<unsigned int>
     cells_along_line(const geometry::CutMesh<dim> &mesh, const SampleLine<dim> &line)
     {
+      using Box                      = std::pair<BoundingBox<dim>, unsigned int>;
       const auto               &tria = mesh.triangulation;
       std::vector<unsigned int> cells(line.n_points, numbers::invalid_unsigned_int);
       auto                      hint = tria.end();
+      // The first active cell that contains p, as a scan over all cells would find it, among
+      // the cells whose bounding box (widened beyond the containment tolerance) holds p. The
+      // tree is built when the walk from the last cell first fails.
+      std::vector<typename Triangulation<dim>::active_cell_iterator> by_index;
+      std::unique_ptr<RTree<Box>>                                    tree;
+      const auto first_cell_containing = [&](const Point<dim> &p) ->
+        typename Triangulation<dim>::cell_iterator {
+          if (!tree)
+            {
+              std::vector<Box> boxes;
+              for (const auto &cell : tria.active_cell_iterators())
+                {
+                  BoundingBox<dim> box  = cell->bounding_box();
+                  double           size = 0;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    size = std::max(size, box.side_length(d));
+                  box.extend(1e-8 * size);
+                  boxes.emplace_back(box, cell->active_cell_index());
+                  by_index.push_back(cell);
+                }
+              tree = std::make_unique<RTree<Box>>(pack_rtree(boxes));
+            }
+          std::vector<Box> hits;
+          tree->query(boost::geometry::index::intersects(p), std::back_inserter(hits));
+          std::sort(hits.begin(), hits.end(), [](const Box &a, const Box &b) {
+            return a.second < b.second;
+          });
+          for (const auto &hit : hits)
+            if (contains<dim>(by_index[hit.second], p))
+              return by_index[hit.second];
+          return tria.end();
+        };
       for (unsigned int k = 0; k < line.n_points; ++k)
         {
           const double     t     = double(k) / (line.n_points - 1);
@@ -125,12 +163,7 @@ namespace porofrac
                     }
             }
           if (found == tria.end())
-            for (const auto &cell : tria.active_cell_iterators())
-              if (contains<dim>(cell, p))
-                {
-                  found = cell;
-                  break;
-                }
+            found = first_cell_containing(p);
           if (found != tria.end())
             {
               cells[k] = found->active_cell_index();
