@@ -2,14 +2,14 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/flow/line_samples.h>
+#include <porofrac/geometry/simplex_tools.h>
 
 #include <algorithm>
+#include <array>
 #include <iterator>
 #include <memory>
 #include <regex>
@@ -21,30 +21,15 @@ namespace porofrac
   {
     namespace
     {
-      /// Whether @p p lies in the simplex @p cell (barycentric coordinates >= -tol).
+      /// Whether @p p lies in the simplex @p cell (barycentric coordinates >= -1e-10).
       template <int dim, typename Cell>
       bool
       contains(const Cell &cell, const Point<dim> &p)
       {
-        FullMatrix<double> A(dim, dim);
-        Vector<double>     rhs(dim), lambda(dim);
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              A(d, i) = cell->vertex(i + 1)[d] - cell->vertex(0)[d];
-            rhs(i) = p[i] - cell->vertex(0)[i];
-          }
-        A.gauss_jordan();
-        A.vmult(lambda, rhs);
-        const double tol = 1e-10;
-        double       sum = 0;
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            if (lambda(i) < -tol)
-              return false;
-            sum += lambda(i);
-          }
-        return sum <= 1 + tol;
+        std::array<Point<dim>, dim + 1> vertices;
+        for (unsigned int i = 0; i <= dim; ++i)
+          vertices[i] = cell->vertex(i);
+        return geometry::contains<dim>(vertices, p, 1e-10);
       }
     } // namespace
 

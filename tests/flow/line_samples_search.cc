@@ -6,12 +6,12 @@
 // the cubes' shared edges, where the walk fails at every cube; lines in a fracture plane and
 // along a grid line; a line leaving the box) and on a 2D gmsh mesh with a T: the same cell at
 // every point, each containing its point, and the same points outside.
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
 
 #include <porofrac/flow/line_samples.h>
 #include <porofrac/geometry/mesh_generator.h>
+#include <porofrac/geometry/simplex_tools.h>
 
+#include <array>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -21,28 +21,15 @@ using namespace dealii;
 
 namespace
 {
+  /// Whether @p p lies in the simplex @p cell (barycentric coordinates >= -1e-10).
   template <int dim, typename Cell>
   bool
   contains(const Cell &cell, const Point<dim> &p)
   {
-    FullMatrix<double> A(dim, dim);
-    Vector<double>     rhs(dim), lambda(dim);
-    for (unsigned int i = 0; i < dim; ++i)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          A(d, i) = cell->vertex(i + 1)[d] - cell->vertex(0)[d];
-        rhs(i) = p[i] - cell->vertex(0)[i];
-      }
-    A.gauss_jordan();
-    A.vmult(lambda, rhs);
-    double sum = 0;
-    for (unsigned int i = 0; i < dim; ++i)
-      {
-        if (lambda(i) < -1e-10)
-          return false;
-        sum += lambda(i);
-      }
-    return sum <= 1 + 1e-10;
+    std::array<Point<dim>, dim + 1> vertices;
+    for (unsigned int i = 0; i <= dim; ++i)
+      vertices[i] = cell->vertex(i);
+    return geometry::contains<dim>(vertices, p, 1e-10);
   }
 
   /// The walk of cells_along_line with a scan over all cells where it fails.
