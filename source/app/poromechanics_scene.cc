@@ -5,6 +5,7 @@
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/app/poromechanics_scene.h>
 #include <porofrac/app/time_loop.h>
+#include <porofrac/base/mpi_tools.h>
 #include <porofrac/coupling/energy_estimate.h>
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/io/pvd_writer.h>
@@ -445,11 +446,16 @@ namespace porofrac
           return;
         TimerOutput::Scope timer(context.timer, "Coupling: output");
         const std::string  name = "poromechanics-" + Utilities::int_to_string(step, 5);
-        const std::string  file =
-          write_fields(pm, context.path(name), context.output_format, pieces);
+        std::string        file;
+        collectively(context.communicator, [&]() {
+          file = write_fields(pm, context.path(name), context.output_format, pieces);
+        });
+        // Listed once every piece is written.
+        collectively(context.communicator, [&]() {
+          if (context.writes_files())
+            pvd.add(time, file);
+        });
         last_written = step;
-        if (context.writes_files())
-          pvd.add(time, file);
       }
 
 

@@ -5,6 +5,7 @@
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/app/time_loop.h>
 #include <porofrac/app/two_phase_flow_scene.h>
+#include <porofrac/base/mpi_tools.h>
 #include <porofrac/flow/boundary_fluxes.h>
 #include <porofrac/flow/flow_output.h>
 #include <porofrac/flow/line_samples.h>
@@ -296,21 +297,27 @@ namespace porofrac
       {
         if (context.output_format == "none")
           return;
-        // Every process writes its cells (one piece each, or rank 0 all of them).
+        // Every process writes its cells (one piece each, or rank 0 all of them); a file that
+        // cannot be written stops every process.
         TimerOutput::Scope timer(context.timer, "Flow: output");
         const std::string  name   = "flow-" + Utilities::int_to_string(step, 5);
         const std::string &format = context.output_format;
-        const std::string  file   = geometry::write_cell_fields(
-          mesh, context.path(name), format, flow::matrix_fields(solver, grid), pieces);
+        std::string        file;
+        collectively(context.communicator, [&]() {
+          file = geometry::write_cell_fields(
+            mesh, context.path(name), format, flow::matrix_fields(solver, grid), pieces);
+          if (writer && grid.n_fracture_cells > 0)
+            geometry::write_fracture_cells(mesh,
+                                           context.path(name + "_fractures." + format),
+                                           format,
+                                           flow::fracture_fields(solver, grid));
+        });
+        // Listed once every piece is written.
+        collectively(context.communicator, [&]() {
+          if (writer)
+            pvd.add(t, file);
+        });
         last_written = step;
-        if (!writer)
-          return;
-        if (grid.n_fracture_cells > 0)
-          geometry::write_fracture_cells(mesh,
-                                         context.path(name + "_fractures." + format),
-                                         format,
-                                         flow::fracture_fields(solver, grid));
-        pvd.add(t, file);
       }
 
 

@@ -4,13 +4,16 @@
 // fractured-square drainage (two-phase flow) and the first step of the drying cylinder with the
 // distributed contact problem (poromechanics: cell fields and the P2 displacement). Checked for
 // every file of the .pvd: a .pvtu naming two pieces that exist, each with cells, whose cells
-// add up to the mesh's (summary.json n_cells), and the fields the record declares.
+// add up to the mesh's (summary.json n_cells), and the fields the record declares. A piece that
+// cannot be written (a directory in its place, on rank 1 only) stops both processes with the
+// same InputError, and the .pvd lists only the files written whole.
 // mpi: 2
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <porofrac/app/parameters.h>
 #include <porofrac/app/simulator.h>
+#include <porofrac/base/exceptions.h>
 #include <porofrac/io/deck.h>
 
 #include <filesystem>
@@ -125,6 +128,52 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  /// The flow run again with step 3's piece of rank 1 blocked by a directory of its name.
+  void
+  blocked_piece()
+  {
+    const std::string dir  = "blocked-out";
+    const unsigned    rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    if (rank == 0)
+      {
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir + "/flow-00003_0001.vtu");
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+    dealii::ParameterHandler prm;
+    porofrac::app::declare_all_parameters(prm);
+    porofrac::io::Deck deck(prm);
+    const std::string  path = (std::filesystem::path(__FILE__).parent_path() /
+                              "../flow/fractured_square_drainage_short.prm")
+                               .lexically_normal()
+                               .string();
+    deck.read(path);
+    for (const char *s :
+         {"Output/Format=vtu", "Output/Verbosity=quiet", "Output/Timer output=none"})
+      deck.set(s);
+    std::ostringstream report;
+    std::string        outcome = "no error";
+    try
+      {
+        porofrac::app::run_scene<2>(prm, path, dir, report);
+      }
+    catch (const porofrac::InputError &e)
+      {
+        outcome = std::string("InputError: ") + e.what();
+      }
+    const auto outcomes = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, outcome);
+    if (rank != 0)
+      return;
+    const auto files = captures(text_of(dir + "/flow.pvd"), "file=\"([^\"]+)\"");
+    std::cout << "blocked piece, rank 0: " << outcomes[0] << std::endl
+              << "blocked piece, rank 1: " << outcomes[1] << std::endl
+              << "blocked piece: files in flow.pvd: " << files.size() << ", the last "
+              << (files.empty() ? "none" : files.back()) << std::endl;
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
@@ -134,4 +183,5 @@ main(int argc, char **argv)
                 "coupled-out",
                 "poromechanics.pvd",
                 {});
+  blocked_piece();
 }
