@@ -317,6 +317,20 @@ namespace porofrac
           finish("failed", e.what());
           throw;
         }
+      catch (const InputError &e)
+        {
+          // Input found bad once the scene has started (a parameter checked against the mesh,
+          // an output file that cannot be written): the run stops with this error, and
+          // summary.json says why where it can still be written.
+          try
+            {
+              finish("failed", e.what());
+            }
+          catch (const InputError &)
+            {
+            }
+          throw;
+        }
       catch (const Interrupted &e)
         {
           finish("interrupted", e.what());

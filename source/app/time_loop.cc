@@ -77,7 +77,18 @@ namespace porofrac
                                   ". The last accepted state is written.");
             }
           stepper.accept();
-          accept();
+          try
+            {
+              accept();
+            }
+          catch (const InputError &)
+            {
+              // An output file that cannot be written: the totals of the accepted steps still
+              // go to summary.json.
+              if (on_stop)
+                on_stop();
+              throw;
+            }
           if (dealii::Utilities::MPI::max(interrupt_signal(), communicator) != 0 &&
               !stepper.finished())
             {

@@ -6,7 +6,7 @@
 // every file of the .pvd: a .pvtu naming two pieces that exist, each with cells, whose cells
 // add up to the mesh's (summary.json n_cells), and the fields the record declares. A piece that
 // cannot be written (a directory in its place, on rank 1 only) stops both processes with the
-// same InputError, and the .pvd lists only the files written whole.
+// same InputError, the .pvd lists only the files written whole, and summary.json says why.
 // mpi: 2
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -166,11 +166,18 @@ namespace
     const auto outcomes = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, outcome);
     if (rank != 0)
       return;
-    const auto files = captures(text_of(dir + "/flow.pvd"), "file=\"([^\"]+)\"");
+    const auto files   = captures(text_of(dir + "/flow.pvd"), "file=\"([^\"]+)\"");
+    const auto summary = text_of(dir + "/summary.json");
+    const auto status  = captures(summary, "\"status\": *\"([^\"]*)\"");
+    const auto reason  = captures(summary, "\"reason\": *\"([^\"]*)\"");
+    const auto steps   = captures(summary, "\"n_time_steps\": *([0-9]+)");
     std::cout << "blocked piece, rank 0: " << outcomes[0] << std::endl
               << "blocked piece, rank 1: " << outcomes[1] << std::endl
               << "blocked piece: files in flow.pvd: " << files.size() << ", the last "
-              << (files.empty() ? "none" : files.back()) << std::endl;
+              << (files.empty() ? "none" : files.back()) << std::endl
+              << "blocked piece: summary.json status " << (status.empty() ? "none" : status[0])
+              << ", reason " << (reason.empty() ? "none" : reason[0]) << ", time steps "
+              << (steps.empty() ? "none" : steps[0]) << std::endl;
   }
 } // namespace
 
