@@ -128,15 +128,33 @@ def read_vtu(path):
     return points, cells, data
 
 
+def read_pvtu(path):
+    """The pieces a .pvtu record lists (runs on several processes), joined as one read_vtu."""
+    root = ElementTree.parse(path).getroot()
+    points, cells, data = [], [], {}
+    for piece in root.iter("Piece"):
+        p, c, d = read_vtu(os.path.join(os.path.dirname(path), piece.get("Source")))
+        cells += [[k + len(points) for k in cell] for cell in c]
+        points += p
+        for name, values in d.items():
+            data.setdefault(name, []).extend(values)
+    return points, cells, data
+
+
 def read_fields(path):
-    """read_vtu or read_legacy_vtk, by the file's extension."""
+    """read_vtu, read_pvtu or read_legacy_vtk, by the file's extension."""
+    if path.endswith(".pvtu"):
+        return read_pvtu(path)
     return read_vtu(path) if path.endswith(".vtu") else read_legacy_vtk(path)
 
 
 def mesh_file(directory, name):
-    """DIRECTORY/NAME.vtu if it exists, else DIRECTORY/NAME.vtk."""
-    vtu = os.path.join(directory, name + ".vtu")
-    return vtu if os.path.exists(vtu) else os.path.join(directory, name + ".vtk")
+    """DIRECTORY/NAME.vtu, .pvtu (one piece per process) or .vtk, the first that exists."""
+    for extension in (".vtu", ".pvtu"):
+        path = os.path.join(directory, name + extension)
+        if os.path.exists(path):
+            return path
+    return os.path.join(directory, name + ".vtk")
 
 
 def main():

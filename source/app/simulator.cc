@@ -90,10 +90,10 @@ namespace porofrac
         context.progress << "*** Wrote " << context.path("summary.json") << std::endl;
       }
 
-      /// Reports the cut mesh and writes its files (rank 0 of the scene's processes).
+      /// Reports the cut mesh (rank 0 of the scene's processes).
       template <int dim>
       void
-      report_and_write_mesh(const geometry::CutMesh<dim> &mesh, io::RunContext &context)
+      report_cut_mesh(const geometry::CutMesh<dim> &mesh, io::RunContext &context)
       {
         using namespace dealii;
         if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
@@ -103,8 +103,21 @@ namespace porofrac
         context.summary["n_fracture_faces"] = static_cast<unsigned int>(mesh.fracture_faces.size());
         context.summary["n_dofs_mechanics"] = 0;
         context.summary["n_unknowns_flow"]  = 0;
-        TimerOutput::Scope t(context.timer, "Output: mesh");
-        geometry::write_mesh(mesh, context.path("mesh"), context.output_format);
+      }
+
+      /// Writes the mesh files: whole on one process, else each process the cells of
+      /// @p cell_owner that are its own (geometry::write_mesh). Collective.
+      template <int dim>
+      void
+      write_mesh_files(const geometry::CutMesh<dim>    &mesh,
+                       const std::vector<unsigned int> &cell_owner,
+                       io::RunContext                  &context)
+      {
+        dealii::TimerOutput::Scope t(context.timer, "Output: mesh");
+        const auto pieces = geometry::replicated_mesh_pieces(cell_owner, context.communicator);
+        collectively(context.communicator, [&]() {
+          geometry::write_mesh(mesh, context.path("mesh"), context.output_format, pieces);
+        });
       }
 
       /// Axisymmetric scenes take the second coordinate as the radius r (Section 5.3): a domain
@@ -201,7 +214,7 @@ namespace porofrac
         }
         if (!axisymmetric.empty())
           check_radius_non_negative<dim>(mesh->triangulation.get_vertices(), axisymmetric);
-        collectively(context.communicator, [&]() { report_and_write_mesh(*mesh, context); });
+        collectively(context.communicator, [&]() { report_cut_mesh(*mesh, context); });
 
         if (physics == "contact mechanics" && context.communicator != MPI_COMM_SELF)
           {
@@ -211,10 +224,14 @@ namespace porofrac
               distributed =
                 std::make_unique<geometry::DistributedCutMesh<dim>>(*mesh, context.communicator);
             }
+            write_mesh_files(*mesh, distributed->cell_owners(), context);
             run_contact_mechanics_scene(physics_parameters, *distributed, context);
           }
         else if (physics == "contact mechanics")
-          run_contact_mechanics_scene(physics_parameters, *mesh, context);
+          {
+            write_mesh_files(*mesh, {}, context);
+            run_contact_mechanics_scene(physics_parameters, *mesh, context);
+          }
         else if (physics == "two-phase flow" || physics == "poromechanics")
           {
             std::vector<unsigned int>                          cell_owner;
@@ -232,12 +249,15 @@ namespace porofrac
                 else
                   cell_owner = geometry::partition_cells(*mesh, context.communicator);
               }
+            write_mesh_files(*mesh, cell_owner, context);
             if (physics == "two-phase flow")
               run_two_phase_flow_scene(physics_parameters, *mesh, context, cell_owner);
             else
               run_poromechanics_scene(
                 physics_parameters, *mesh, context, cell_owner, distributed.get());
           }
+        else // mesh only
+          write_mesh_files(*mesh, {}, context);
       }
     } // namespace
 

@@ -25,7 +25,7 @@ namespace porofrac
           "summary\\.json|history\\.csv|fractures\\.csv|fracture_p2\\.csv|checkpoint\\.bin|"
           "(mesh|mesh_fractures|mesh_fracture_edges|fractures|displacement)\\.(vtu|vtk)|line_.+\\."
           "csv|"
-          "displacement(_[0-9]+\\.(vtu|vtk)|\\.pvtu)|"
+          "(mesh|displacement)(_[0-9]+\\.(vtu|vtk)|\\.pvtu)|"
           "(flow|poromechanics)(-[0-9]+(_fractures|_displacement)?\\.(vtu|vtk|pvtu)|\\.pvd)|"
           "(flow|poromechanics)-[0-9]+(_displacement)?_[0-9]+\\.(vtu|vtk)");
         return std::regex_match(name, pattern);

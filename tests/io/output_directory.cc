@@ -72,6 +72,8 @@ main()
                            "flow-00003_0001.vtu",
                            "poromechanics-00012_displacement_0000.vtu",
                            "poromechanics-00012_displacement.pvtu",
+                           "mesh_0001.vtu",
+                           "mesh.pvtu",
                            "notes.txt",
                            "my_mesh.vtu",
                            "summary.json.bak"})
@@ -90,7 +92,9 @@ main()
                            "summary.json.bak",
                            "summary.json",
                            "flow-00003_0001.vtu",
-                           "poromechanics-00012_displacement_0000.vtu"})
+                           "poromechanics-00012_displacement_0000.vtu",
+                           "mesh_0001.vtu",
+                           "mesh.pvtu"})
     std::cout << "  " << name << (fs::exists(dir / name) ? " kept" : " removed") << std::endl;
 
   attempt("empty directory", dir);

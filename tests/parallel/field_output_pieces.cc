@@ -4,7 +4,8 @@
 // fractured-square drainage (two-phase flow) and the first step of the drying cylinder with the
 // distributed contact problem (poromechanics: cell fields and the P2 displacement). Checked for
 // every file of the .pvd: a .pvtu naming two pieces that exist, each with cells, whose cells
-// add up to the mesh's (summary.json n_cells), and the fields the record declares. A piece that
+// add up to the mesh's (summary.json n_cells), and the fields the record declares; the same for
+// the mesh file (mesh.pvtu; mesh_fractures.vtu whole on rank 0). A piece that
 // cannot be written (a directory in its place, on rank 1 only) stops both processes with the
 // same InputError, the .pvd lists only the files written whole, and summary.json says why.
 // mpi: 2
@@ -124,7 +125,13 @@ namespace
               << " records of two pieces with all " << n_cells << " cells";
     if (n_displacement > 0)
       std::cout << "; displacement: " << displacement_good << " of " << n_displacement;
-    std::cout << std::endl;
+    std::cout << "; mesh.pvtu: "
+              << (check_record(dir, "mesh.pvtu", n_cells, false) ? "two pieces with all cells" :
+                                                                   "wrong")
+              << ", mesh.vtu " << (std::filesystem::exists(dir + "/mesh.vtu") ? "exists" : "absent")
+              << ", mesh_fractures.vtu "
+              << (std::filesystem::exists(dir + "/mesh_fractures.vtu") ? "exists" : "absent")
+              << std::endl;
   }
 } // namespace
 

@@ -50,6 +50,15 @@ namespace porofrac
       {
         return n_ranks > 1 && (format == "vtu" || own_cells_only);
       }
+
+      /// Whether this process writes the cell of active index @p cell in a file in @p format.
+      bool
+      writes(const unsigned int cell, const std::string &format) const
+      {
+        if (!split(format))
+          return rank == 0;
+        return own_cells_only || cell_owner[cell] == rank;
+      }
     };
 
     /// The pieces of a run on @p communicator whose processes each hold the whole mesh,
@@ -112,12 +121,17 @@ namespace porofrac
                       const CellFields   &fields,
                       const OutputPieces &pieces = OutputPieces());
 
-    /// Writes the cut mesh (material id and circumcentre-inside flag per cell) to
-    /// @p basename.vtu/.vtk, its fracture faces to @p basename_fractures.vtu/.vtk and, in 3D,
-    /// its fracture edges to @p basename_fracture_edges.vtu/.vtk.
+    /// Writes the cut mesh (material id and circumcentre-inside flag per cell) as the field file
+    /// @p basename (write_field_file: whole, or one piece per process), its fracture faces to
+    /// @p basename_fractures.vtu/.vtk and, in 3D, its fracture edges to
+    /// @p basename_fracture_edges.vtu/.vtk (these two by rank 0). Every process of the run
+    /// calls it.
     template <int dim>
     void
-    write_mesh(const CutMesh<dim> &mesh, const std::string &basename, const std::string &format);
+    write_mesh(const CutMesh<dim> &mesh,
+               const std::string  &basename,
+               const std::string  &format,
+               const OutputPieces &pieces = OutputPieces());
   } // namespace geometry
 } // namespace porofrac
 
