@@ -256,47 +256,51 @@ namespace porofrac
       CellScratch<dim>     scratch(mesh.mapping(), fe);
       f.reinit(owned_u, comm);
       divergence.clear();
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            scratch.clear();
-            assemble_cell_volume(prm, fe, cell, loads, scratch);
-            assemble_cell_boundary(prm, fe, cell, loads, scratch);
-            cell->get_dof_indices(scratch.local);
-            if (has_constrained_dofs(cell, scratch.local))
-              {
-                // K_boundary = K - K_constrained on the cells with constrained dofs (on the
-                // others the two agree).
-                K_boundary.add(scratch.local, scratch.matrix);
-                scratch.matrix *= -1.;
-                constraints_hom.distribute_local_to_global(scratch.matrix,
-                                                           scratch.local,
-                                                           K_boundary);
-                scratch.matrix *= -1.;
-              }
-            f.add(scratch.local, scratch.rhs);
-            CellDivergence d{mesh.serial_cell(cell)->active_cell_index(), {}};
-            for (unsigned int i = 0; i < scratch.local.size(); ++i)
-              if (scratch.div_integral(i) != 0)
-                d.entries.emplace_back(scratch.local[i], scratch.div_integral(i));
-            divergence.push_back(std::move(d));
-            constraints_hom.distribute_local_to_global(scratch.matrix,
-                                                       scratch.local,
-                                                       K_constrained);
-          }
-      // A fluid pressure p in the fracture pushes both sides apart, -p n on each (see
-      // ElasticitySystem::add_fracture_pressure), added by the owner of each side.
-      if (!loads.fracture_pressure.empty())
-        for (const SideCoupling &s : owned_sides(mesh, dof_handler, fe, prm.axisymmetric))
-          {
-            const auto &face = mesh.serial.fracture_faces[s.face];
-            const auto  it   = loads.fracture_pressure.find(face.fracture_id);
-            if (it == loads.fracture_pressure.end())
-              continue;
-            const double p = it->second->value(face.centre);
-            for (const auto &[key, value] : s.entries)
-              f(key.first) += -p * face.normal[key.second] * value;
-          }
+      // A load that cannot be evaluated (an expression not finite on a process's boundary
+      // faces) stops every process, not only the one that owns the face.
+      collectively(comm, [&]() {
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              scratch.clear();
+              assemble_cell_volume(prm, fe, cell, loads, scratch);
+              assemble_cell_boundary(prm, fe, cell, loads, scratch);
+              cell->get_dof_indices(scratch.local);
+              if (has_constrained_dofs(cell, scratch.local))
+                {
+                  // K_boundary = K - K_constrained on the cells with constrained dofs (on the
+                  // others the two agree).
+                  K_boundary.add(scratch.local, scratch.matrix);
+                  scratch.matrix *= -1.;
+                  constraints_hom.distribute_local_to_global(scratch.matrix,
+                                                             scratch.local,
+                                                             K_boundary);
+                  scratch.matrix *= -1.;
+                }
+              f.add(scratch.local, scratch.rhs);
+              CellDivergence d{mesh.serial_cell(cell)->active_cell_index(), {}};
+              for (unsigned int i = 0; i < scratch.local.size(); ++i)
+                if (scratch.div_integral(i) != 0)
+                  d.entries.emplace_back(scratch.local[i], scratch.div_integral(i));
+              divergence.push_back(std::move(d));
+              constraints_hom.distribute_local_to_global(scratch.matrix,
+                                                         scratch.local,
+                                                         K_constrained);
+            }
+        // A fluid pressure p in the fracture pushes both sides apart, -p n on each (see
+        // ElasticitySystem::add_fracture_pressure), added by the owner of each side.
+        if (!loads.fracture_pressure.empty())
+          for (const SideCoupling &s : owned_sides(mesh, dof_handler, fe, prm.axisymmetric))
+            {
+              const auto &face = mesh.serial.fracture_faces[s.face];
+              const auto  it   = loads.fracture_pressure.find(face.fracture_id);
+              if (it == loads.fracture_pressure.end())
+                continue;
+              const double p = it->second->value(face.centre);
+              for (const auto &[key, value] : s.entries)
+                f(key.first) += -p * face.normal[key.second] * value;
+            }
+      });
       K_boundary.compress(VectorOperation::add);
       K_constrained.compress(VectorOperation::add);
       f.compress(VectorOperation::add);
