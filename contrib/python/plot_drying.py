@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Reproduces the paper's Figs. 14-18 (Section 5.3) from PoroFrac runs of prm/drying_cylinder.prm
-(VTU, the deck's format, or legacy VTK with `Output/Format = vtk`).
+(VTU, the deck's format, also the .pvtu pieces of runs on several processes, or legacy VTK with
+`Output/Format = vtk`).
 
 Usage: plot_drying.py --fields FIELDS_DIR --out PICTURE_DIR
                       [--as AS_DIR --ssn SSN_DIR [--as-u AS_U_DIR] [--anderson ANDERSON_DIR]]
@@ -68,6 +69,9 @@ def snapshots(directory, times):
 
 
 def fracture_segments(base, extension):
+    # Runs on several processes list .pvtu records; their fracture files are whole .vtu files.
+    if extension == ".pvtu":
+        extension = ".vtu"
     points, cells, data = read_fields(base + "_fractures" + extension)
     segments = [[points[c[0]], points[c[1]]] for c in cells]
     return segments, data
