@@ -174,7 +174,7 @@ namespace porofrac
                             "beyond the edge (merged or unsigned distances)"
                          << std::endl;
         context.summary["n_unknowns_flow"] = solver.n_unknowns();
-        context.summary["n_nonzeros_flow"] = solver.sparsity.n_nonzero_elements();
+        context.summary["n_nonzeros_flow"] = solver.n_nonzeros();
         io::Json &admissibility            = context.summary["flow_mesh"];
         admissibility["cell_centres"]      = circumcentres ? "circumcentre" : "centroid";
         admissibility["n_non_admissible_matrix_faces"]         = grid.n_non_admissible;

@@ -34,7 +34,7 @@ namespace porofrac
         , rocks(rocks)
         , parameters(parameters)
     {
-      number_unknowns({});
+      number_unknowns({}, 0);
       virtual_pore_volume =
         1e-3 * total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       linear_solver = create_serial_linear_solver(parameters.linear_solver, "Flow/Linear solver");
@@ -45,7 +45,8 @@ namespace porofrac
 
     template <int dim>
     void
-    TwoPhaseSolver<dim>::number_unknowns(const std::vector<unsigned int> &node_owner)
+    TwoPhaseSolver<dim>::number_unknowns(const std::vector<unsigned int> &node_owner,
+                                         const unsigned int               rank)
     {
       // Unknowns process by process (node order within each): one contiguous range each.
       std::vector<unsigned int> order(grid.n_nodes());
@@ -61,9 +62,20 @@ namespace porofrac
       for (const unsigned int i : order)
         if (!grid.is_dirichlet(i))
           node_dof[i] = n_free++;
-      DynamicSparsityPattern dsp(2 * n_free, 2 * n_free);
+      // The rows this process assembles (all of them without @p node_owner): a distributed
+      // run keeps no pattern for the other processes' rows.
+      const auto has_rows = [&](const unsigned int i) {
+        return node_dof[i] != numbers::invalid_unsigned_int &&
+               (node_owner.empty() || node_owner[i] == rank);
+      };
+      IndexSet rows(2 * n_free);
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
-        if (node_dof[i] != numbers::invalid_unsigned_int)
+        if (has_rows(i))
+          rows.add_range(dof(i, 0), dof(i, 1) + 1);
+      rows.compress();
+      DynamicSparsityPattern dsp(2 * n_free, 2 * n_free, rows);
+      for (unsigned int i = 0; i < grid.n_nodes(); ++i)
+        if (has_rows(i))
           for (unsigned int p = 0; p < 2; ++p)
             for (unsigned int q = 0; q < 2; ++q)
               dsp.add(dof(i, p), dof(i, q));
@@ -73,8 +85,10 @@ namespace porofrac
           for (unsigned int p = 0; p < 2; ++p)
             for (unsigned int q = 0; q < 2; ++q)
               {
-                dsp.add(dof(c.a, p), dof(c.b, q));
-                dsp.add(dof(c.b, p), dof(c.a, q));
+                if (has_rows(c.a))
+                  dsp.add(dof(c.a, p), dof(c.b, q));
+                if (has_rows(c.b))
+                  dsp.add(dof(c.b, p), dof(c.a, q));
               }
       jacobian.clear();
       set_up_jacobian.clear();
@@ -90,8 +104,8 @@ namespace porofrac
                                     const std::vector<unsigned int> &node_owner)
     {
       AssertDimension(node_owner.size(), grid.n_nodes());
-      number_unknowns(node_owner);
       const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+      number_unknowns(node_owner, rank);
       owned_node.assign(grid.n_nodes(), false);
       IndexSet owned(2 * n_free);
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)

@@ -69,6 +69,13 @@ namespace porofrac
       bool
       all_processes(const bool value) const;
 
+      /// Nonzeros of the distributed matrix, all processes' rows.
+      dealii::types::global_dof_index
+      n_nonzeros() const
+      {
+        return matrix.n_nonzero_elements();
+      }
+
       const MPI_Comm communicator;
 
     private:

@@ -141,6 +141,13 @@ namespace porofrac
         return 2 * n_free;
       }
 
+      /// Nonzeros of the Newton matrix (after distribute(), of all processes' rows).
+      types::global_dof_index
+      n_nonzeros() const
+      {
+        return distribution ? distribution->n_nonzeros() : sparsity.n_nonzero_elements();
+      }
+
       /// Global unknown index of node @p i and phase @p phase (invalid for Dirichlet nodes).
       unsigned int
       dof(const unsigned int i, const unsigned int phase) const
@@ -241,9 +248,10 @@ namespace porofrac
 
     private:
       /// Numbers the unknowns of the non-Dirichlet nodes, those of process 0 first if
-      /// @p node_owner is not empty, and makes the sparsity pattern and the Jacobian.
+      /// @p node_owner is not empty, and makes the sparsity pattern and the Jacobian: of all
+      /// rows, or with @p node_owner of the rows of process @p rank's nodes only.
       void
-      number_unknowns(const std::vector<unsigned int> &node_owner);
+      number_unknowns(const std::vector<unsigned int> &node_owner, unsigned int rank);
       /// Whether this process assembles the rows of node @p i.
       bool
       assembles(const unsigned int i) const
