@@ -282,8 +282,7 @@ namespace porofrac
     {
       if (format == "none")
         return;
-      // The cells this process writes only: at 64^3 cells the circumcentres of the whole mesh
-      // cost a second.
+      // The flags of the cells this process writes only.
       const auto    &tria = mesh.triangulation;
       Vector<double> material(tria.n_active_cells()), centre_inside(tria.n_active_cells());
       for (const auto &cell : tria.active_cell_iterators())
