@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/checkpointing.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/mpi_tools.h>
 
 #include <algorithm>
 #include <sstream>
@@ -109,10 +110,19 @@ namespace porofrac
     void
     Checkpointing::after_step(const Save &save)
     {
+      // A text file that stopped taking rows (a full disk) stops the run like any output that
+      // cannot be written: rank 0 writes the rows, every process stops.
+      collectively(context.communicator, [&]() {
+        if (context.writes_files())
+          for (unsigned int i = 0; i < names.size(); ++i)
+            check_input(bool(*files[i]), "Output/Directory", "cannot write " + names[i]);
+      });
       const auto &o = context.options;
-      const bool  due =
+      const bool  due_here =
         (o.checkpoint_every_steps > 0 && stepper.step_number() % o.checkpoint_every_steps == 0) ||
         (o.checkpoint_every_seconds > 0 && clock.wall_time() >= o.checkpoint_every_seconds);
+      // The processes' clocks differ: all take part when the checkpoint is due on any of them.
+      const bool due = dealii::Utilities::MPI::max(int(due_here), context.communicator) > 0;
       if (due && !stepper.finished())
         write(save);
     }
@@ -122,23 +132,26 @@ namespace porofrac
     void
     Checkpointing::write(const Save &save)
     {
-      if (!context.writes_files())
-        return;
       dealii::TimerOutput::Scope t(context.timer, "Output: checkpoints");
-      io::CheckpointWriter       w;
-      w.put("scene kind", scene_kind);
-      put_stepper(w, stepper.state());
-      w.put("field files", pvd.get_entries());
-      for (unsigned int i = 0; i < names.size(); ++i)
-        {
-          files[i]->flush();
-          std::ifstream      in(context.path(names[i]));
-          std::ostringstream text;
-          text << in.rdbuf();
-          w.put(names[i], text.str());
-        }
-      save(w);
-      w.write(context.path(checkpoint_name));
+      // Rank 0 writes; a checkpoint that cannot be written stops every process.
+      collectively(context.communicator, [&]() {
+        if (!context.writes_files())
+          return;
+        io::CheckpointWriter w;
+        w.put("scene kind", scene_kind);
+        put_stepper(w, stepper.state());
+        w.put("field files", pvd.get_entries());
+        for (unsigned int i = 0; i < names.size(); ++i)
+          {
+            files[i]->flush();
+            std::ifstream      in(context.path(names[i]));
+            std::ostringstream text;
+            text << in.rdbuf();
+            w.put(names[i], text.str());
+          }
+        save(w);
+        w.write(context.path(checkpoint_name));
+      });
       clock.restart();
     }
   } // namespace app

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <porofrac/app/contact_report.h>
+#include <porofrac/io/output_file.h>
 
 #include <fstream>
 #include <iomanip>
@@ -147,9 +148,10 @@ namespace porofrac
     void
     write_fracture_outputs(const ContactSolution<dim> &solution, io::RunContext &context)
     {
-      std::ofstream csv(context.path("fractures.csv"));
-      mechanics::write_fracture_table_header(csv, dim, false);
-      mechanics::write_fracture_table_rows(csv, solution.mesh, solution.faces);
+      io::OutputFile csv(context.path("fractures.csv"));
+      mechanics::write_fracture_table_header(csv.stream(), dim, false);
+      mechanics::write_fracture_table_rows(csv.stream(), solution.mesh, solution.faces);
+      csv.close();
       if (context.output_format == "none" || solution.mesh.fracture_faces.empty())
         return;
       geometry::FractureFields fields;

@@ -11,6 +11,8 @@
 #include <porofrac/flow/line_samples.h>
 #include <porofrac/flow/model.h>
 #include <porofrac/geometry/mesh_output.h>
+#include <porofrac/io/output_directory.h>
+#include <porofrac/io/output_file.h>
 #include <porofrac/io/pvd_writer.h>
 
 #include <algorithm>
@@ -328,9 +330,10 @@ namespace porofrac
       {
         for (const auto &line : sample_lines)
           {
-            const auto    cells = flow::cells_along_line(mesh, line);
-            std::ofstream out(context.path("line_" + line.name + ".csv"));
-            out << (dim == 2 ? "s,x,y,p_w" : "s,x,y,z,p_w") << '\n' << std::setprecision(10);
+            const auto     cells = flow::cells_along_line(mesh, line);
+            io::OutputFile file(context.path("line_" + line.name + ".csv"));
+            std::ostream  &out = file.stream();
+            out << io::sample_line_header(dim) << '\n' << std::setprecision(10);
             unsigned int outside = 0;
             for (unsigned int k = 0; k < cells.size(); ++k)
               {
@@ -346,6 +349,7 @@ namespace porofrac
                   out << ',' << p[d];
                 out << ',' << solver.pressure(solver.state, cells[k], 0) << '\n';
               }
+            file.close();
             if (outside > 0)
               context.report << "Flow: sample line " << line.name << ": " << outside
                              << " points outside the mesh (not written)" << std::endl;
@@ -426,8 +430,11 @@ namespace porofrac
           flow::boundary_balances(mesh, solver, model.matrix_flux, axisymmetric);
         flow::report_boundary_balances(balances, context.report);
         summary["boundary_fluxes"] = flow::to_json(balances);
-        if (writer)
-          write_sample_lines();
+        // Rank 0 writes them; a file that cannot be written stops every process.
+        collectively(context.communicator, [&]() {
+          if (writer)
+            write_sample_lines();
+        });
 
         SceneView<dim> scene{mesh, parameters};
         scene.flow = &model;

@@ -7,9 +7,9 @@
 #include <porofrac/geometry/mesh_output.h>
 #include <porofrac/geometry/mesh_quality.h>
 #include <porofrac/geometry/simplex_tools.h>
+#include <porofrac/io/output_file.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 
 namespace porofrac
@@ -32,8 +32,8 @@ namespace porofrac
                       const int                      vtk_type,
                       const FractureFields          &fields)
       {
-        std::ofstream out(filename);
-        check_input(bool(out), "Output/Directory", "cannot write '" + filename + "'");
+        io::OutputFile file(filename);
+        std::ostream  &out = file.stream();
         out << std::setprecision(17);
         const std::size_t n_cells      = points.size() / n_corners;
         auto              write_points = [&](const char *sep) {
@@ -63,6 +63,7 @@ namespace porofrac
                 for (const double v : values)
                   out << v << '\n';
               }
+            file.close();
             return;
           }
         out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
@@ -90,6 +91,7 @@ namespace porofrac
             out << "\n</DataArray>\n";
           }
         out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+        file.close();
       }
     } // namespace
 
@@ -241,9 +243,9 @@ namespace porofrac
           std::vector<std::string> files;
           for (unsigned int r = 0; r < pieces.n_ranks; ++r)
             files.push_back(piece(r));
-          std::ofstream record(path(name + ".pvtu"));
-          check_input(bool(record), "Output/Directory", "cannot write '" + name + ".pvtu'");
-          data_out.write_pvtu_record(record, files);
+          io::OutputFile record(path(name + ".pvtu"));
+          data_out.write_pvtu_record(record.stream(), files);
+          record.close();
         }
       return name + ".pvtu";
     }
@@ -254,8 +256,8 @@ namespace porofrac
     void
     write_data_out(DataOut<dim> &data_out, const std::string &filename, const std::string &format)
     {
-      std::ofstream out(filename);
-      check_input(bool(out), "Output/Directory", "cannot write '" + filename + "'");
+      io::OutputFile file(filename);
+      std::ostream  &out = file.stream();
       if (format == "vtk")
         {
           // Legacy ASCII VTK: every digit of a double, not the stream's default 6.
@@ -269,6 +271,7 @@ namespace porofrac
           data_out.set_flags(flags);
           data_out.write_vtu(out);
         }
+      file.close();
     }
 
 

@@ -141,7 +141,8 @@ namespace porofrac
       {
         std::ofstream out(temporary, std::ios::binary);
         out << magic << data.str();
-        check_input(bool(out), "--checkpoint-every", "cannot write '" + temporary + "'");
+        out.close();
+        check_input(!out.fail(), "--checkpoint-every", "cannot write '" + temporary + "'");
       }
       std::error_code ec;
       std::filesystem::rename(temporary, file, ec);

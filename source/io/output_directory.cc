@@ -17,18 +17,31 @@ namespace porofrac
   {
     namespace
     {
-      /// The names porofrac writes into an output directory.
+      /// Whether @p file is a sample line porofrac wrote: line_<name>.csv is a name users may
+      /// choose too, so its header decides.
       bool
-      is_porofrac_output(const std::string &name)
+      is_sample_line(const std::filesystem::path &file)
+      {
+        static const std::regex name("line_.+\\.csv");
+        if (!std::regex_match(file.filename().string(), name))
+          return false;
+        std::string   header;
+        std::ifstream in(file);
+        std::getline(in, header);
+        return header == sample_line_header(2) || header == sample_line_header(3);
+      }
+
+      /// The files porofrac writes into an output directory.
+      bool
+      is_porofrac_output(const std::filesystem::path &file)
       {
         static const std::regex pattern(
           "summary\\.json|history\\.csv|fractures\\.csv|fracture_p2\\.csv|checkpoint\\.bin|"
-          "(mesh|mesh_fractures|mesh_fracture_edges|fractures|displacement)\\.(vtu|vtk)|line_.+\\."
-          "csv|"
+          "(mesh|mesh_fractures|mesh_fracture_edges|fractures|displacement)\\.(vtu|vtk)|"
           "(mesh|displacement)(_[0-9]+\\.(vtu|vtk)|\\.pvtu)|"
           "(flow|poromechanics)(-[0-9]+(_fractures|_displacement)?\\.(vtu|vtk|pvtu)|\\.pvd)|"
           "(flow|poromechanics)-[0-9]+(_displacement)?_[0-9]+\\.(vtu|vtk)");
-        return std::regex_match(name, pattern);
+        return std::regex_match(file.filename().string(), pattern) || is_sample_line(file);
       }
 
       /// Whether a process with this id runs (and may be signalled by us).
@@ -89,7 +102,7 @@ namespace porofrac
       if (keep_outputs)
         return;
       for (const auto &entry : fs::directory_iterator(path, ec))
-        if (entry.is_regular_file(ec) && is_porofrac_output(entry.path().filename().string()))
+        if (entry.is_regular_file(ec) && is_porofrac_output(entry.path()))
           if (fs::remove(entry.path(), ec))
             ++removed;
     }

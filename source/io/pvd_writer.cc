@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
+#include <porofrac/io/output_file.h>
 #include <porofrac/io/pvd_writer.h>
 
 #include <fstream>
@@ -28,15 +29,15 @@ namespace porofrac
     PvdWriter::add(const double time, const std::string &file)
     {
       entries.emplace_back(time, file);
-      std::ofstream pvd(filename);
+      OutputFile    collection(filename);
+      std::ostream &pvd = collection.stream();
       pvd << std::setprecision(17);
       pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
              "<Collection>\n";
       for (const auto &e : entries)
         pvd << "<DataSet timestep=\"" << e.first << "\" file=\"" << e.second << "\"/>\n";
       pvd << "</Collection>\n</VTKFile>\n";
-      if (!pvd)
-        throw InputError("Output/Directory", "cannot write " + filename);
+      collection.close();
     }
   } // namespace io
 } // namespace porofrac

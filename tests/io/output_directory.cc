@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // io::OutputDirectory: a directory held by a running process (its lock names process 1, which
 // always runs) is refused with an InputError; a stale lock (a process id that does not run) is
-// taken over; the files of a previous run are removed and other files are kept; the lock is
+// taken over; the files of a previous run are removed and other files are kept (a
+// line_<name>.csv only when it begins with porofrac's sample-line header); the lock is
 // released when the holder ends; a path under a regular file cannot be created.
 #include <porofrac/base/exceptions.h>
 #include <porofrac/io/output_directory.h>
@@ -67,7 +68,6 @@ main()
                            "flow.pvd",
                            "poromechanics-00012_displacement.vtk",
                            "mesh_fracture_edges.vtu",
-                           "line_diagonal.csv",
                            "flow-00003.pvtu",
                            "flow-00003_0001.vtu",
                            "poromechanics-00012_displacement_0000.vtu",
@@ -78,6 +78,9 @@ main()
                            "my_mesh.vtu",
                            "summary.json.bak"})
     touch(dir / name);
+  // A sample line of porofrac's and a user's file under a sample line's name.
+  touch(dir / "line_diagonal.csv", porofrac::io::sample_line_header(3) + "\n0,0,0,0,1\n");
+  touch(dir / "line_survey.csv", "depth,p\n");
 
   touch(dir / ".porofrac.lock", "1\n");
   attempt("held by process 1", dir);
@@ -94,7 +97,9 @@ main()
                            "flow-00003_0001.vtu",
                            "poromechanics-00012_displacement_0000.vtu",
                            "mesh_0001.vtu",
-                           "mesh.pvtu"})
+                           "mesh.pvtu",
+                           "line_diagonal.csv",
+                           "line_survey.csv"})
     std::cout << "  " << name << (fs::exists(dir / name) ? " kept" : " removed") << std::endl;
 
   attempt("empty directory", dir);

@@ -5,10 +5,10 @@
 // distributed contact problem (poromechanics: cell fields and the P2 displacement). Checked for
 // every file of the .pvd: a .pvtu naming two pieces that exist, each with cells, whose cells
 // add up to the mesh's (summary.json n_cells), and the fields the record declares; the same for
-// the mesh file (mesh.pvtu; mesh_fractures.vtu whole on rank 0). A piece that
-// cannot be written (a directory in its place, on rank 1 only) stops both processes with the
-// same InputError, the .pvd lists only the files written whole, and summary.json says why.
-// mpi: 2
+// the mesh file (mesh.pvtu; mesh_fractures.vtu whole on rank 0). A file that cannot be written
+// (a directory in its place: a piece rank 1 writes; a sample line, fractures.csv or a
+// checkpoint rank 0 writes) stops both processes with the same InputError, the .pvd lists only the
+// files written whole, and summary.json says why. mpi: 2
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -137,34 +137,39 @@ namespace
 
 namespace
 {
-  /// The flow run again with step 3's piece of rank 1 blocked by a directory of its name.
+  /// @p deck_file run again with the file @p blocked of the output directory blocked by a
+  /// directory of its name; prints each process's outcome and what the .pvd (if the run has
+  /// one) and summary.json say.
   void
-  blocked_piece()
+  run_blocked(const std::string              &deck_file,
+              const std::string              &blocked,
+              const std::vector<std::string> &settings,
+              const std::string              &pvd     = "",
+              const porofrac::io::RunOptions &options = {})
   {
     const std::string dir  = "blocked-out";
     const unsigned    rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
     if (rank == 0)
       {
         std::filesystem::remove_all(dir);
-        std::filesystem::create_directories(dir + "/flow-00003_0001.vtu");
+        std::filesystem::create_directories(dir + "/" + blocked);
       }
     MPI_Barrier(MPI_COMM_WORLD);
     dealii::ParameterHandler prm;
     porofrac::app::declare_all_parameters(prm);
     porofrac::io::Deck deck(prm);
-    const std::string  path = (std::filesystem::path(__FILE__).parent_path() /
-                              "../flow/fractured_square_drainage_short.prm")
-                               .lexically_normal()
-                               .string();
+    const std::string  path =
+      (std::filesystem::path(__FILE__).parent_path() / deck_file).lexically_normal().string();
     deck.read(path);
-    for (const char *s :
-         {"Output/Format=vtu", "Output/Verbosity=quiet", "Output/Timer output=none"})
+    for (const auto &s : settings)
+      deck.set(s);
+    for (const char *s : {"Output/Verbosity=quiet", "Output/Timer output=none"})
       deck.set(s);
     std::ostringstream report;
     std::string        outcome = "no error";
     try
       {
-        porofrac::app::run_scene<2>(prm, path, dir, report);
+        porofrac::app::run_scene<2>(prm, path, dir, report, options);
       }
     catch (const porofrac::InputError &e)
       {
@@ -173,17 +178,21 @@ namespace
     const auto outcomes = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, outcome);
     if (rank != 0)
       return;
-    const auto files   = captures(text_of(dir + "/flow.pvd"), "file=\"([^\"]+)\"");
     const auto summary = text_of(dir + "/summary.json");
     const auto status  = captures(summary, "\"status\": *\"([^\"]*)\"");
     const auto reason  = captures(summary, "\"reason\": *\"([^\"]*)\"");
     const auto steps   = captures(summary, "\"n_time_steps\": *([0-9]+)");
-    std::cout << "blocked piece, rank 0: " << outcomes[0] << std::endl
-              << "blocked piece, rank 1: " << outcomes[1] << std::endl
-              << "blocked piece: files in flow.pvd: " << files.size() << ", the last "
-              << (files.empty() ? "none" : files.back()) << std::endl
-              << "blocked piece: summary.json status " << (status.empty() ? "none" : status[0])
-              << ", reason " << (reason.empty() ? "none" : reason[0]) << ", time steps "
+    std::cout << blocked << " blocked, rank 0: " << outcomes[0] << std::endl
+              << blocked << " blocked, rank 1: " << outcomes[1] << std::endl;
+    if (!pvd.empty())
+      {
+        const auto files = captures(text_of(dir + "/" + pvd), "file=\"([^\"]+)\"");
+        std::cout << blocked << " blocked: files in " << pvd << ": " << files.size()
+                  << ", the last " << (files.empty() ? "none" : files.back()) << std::endl;
+      }
+    std::cout << blocked << " blocked: summary.json status "
+              << (status.empty() ? "none" : status[0]) << ", reason "
+              << (reason.empty() ? "none" : reason[0]) << ", time steps "
               << (steps.empty() ? "none" : steps[0]) << std::endl;
   }
 } // namespace
@@ -197,5 +206,19 @@ main(int argc, char **argv)
                 "coupled-out",
                 "poromechanics.pvd",
                 {});
-  blocked_piece();
+  // A field piece of rank 1, and files only rank 0 writes: a sample line of the flow run and
+  // fractures.csv of the distributed contact problem.
+  run_blocked("../flow/fractured_square_drainage_short.prm",
+              "flow-00003_0001.vtu",
+              {"Output/Format=vtu"},
+              "flow.pvd");
+  run_blocked("../flow/fractured_square_drainage_short.prm",
+              "line_diagonal.csv",
+              {"Flow/Sample lines=diagonal: (0, 0) (1, 1) 11"});
+  run_blocked("six_fractures_active_set.prm", "fractures.csv", {});
+  // A checkpoint, which rank 0 writes, every second step.
+  porofrac::io::RunOptions every_second_step;
+  every_second_step.checkpoint_every_steps = 2;
+  run_blocked(
+    "../flow/fractured_square_drainage_short.prm", "checkpoint.bin", {}, "", every_second_step);
 }

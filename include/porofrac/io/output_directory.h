@@ -15,9 +15,18 @@ namespace porofrac
      * no longer runs is taken over) and removes the files a previous run left there under the
      * names porofrac writes (summary.json, history.csv, fractures.csv, fracture_p2.csv, mesh*,
      * fractures.*, displacement.* and its pieces displacement_NNNN.*, flow*, poromechanics*,
-     * checkpoint.bin), so that the directory never mixes the outputs of two runs. Other files are
-     * left alone. The destructor releases the lock.
+     * checkpoint.bin) and the sample lines line_<name>.csv that begin with
+     * sample_line_header(), so that the directory never mixes the outputs of two runs. Other
+     * files are left alone. The destructor releases the lock.
      */
+    /// The first line of the sample-line files line_<name>.csv (arc length, point, wetting
+    /// pressure), by which the clean-up tells them from a user's files of the same name.
+    inline std::string
+    sample_line_header(const unsigned int dim)
+    {
+      return dim == 2 ? "s,x,y,p_w" : "s,x,y,z,p_w";
+    }
+
     class OutputDirectory
     {
     public:

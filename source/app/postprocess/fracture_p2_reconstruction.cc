@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/app/postprocess/postprocessor.h>
+#include <porofrac/io/output_file.h>
 #include <porofrac/mechanics/fracture_reconstruction.h>
 
-#include <fstream>
 #include <iomanip>
 
 namespace porofrac
@@ -23,8 +23,9 @@ namespace porofrac
         void
         execute(SceneView<dim> &scene, io::RunContext &context) override
         {
-          const auto   &problem = *scene.mechanics;
-          std::ofstream csv(context.path("fracture_p2.csv"));
+          const auto    &problem = *scene.mechanics;
+          io::OutputFile file(context.path("fracture_p2.csv"));
+          std::ostream  &csv = file.stream();
           csv << "fracture_id,face_id,s_begin,s_end,s,JxW,jump_n,jump_t,lambda_n,lambda_t\n"
               << std::setprecision(12);
           for (const auto &v : mechanics::reconstruct_fracture_fields(problem, 3))
@@ -36,6 +37,7 @@ namespace porofrac
                   << face.abscissa_end << ',' << v.abscissa << ',' << v.JxW << ',' << j[0] << ','
                   << j[dim - 1] << ',' << l[0] << ',' << l[dim - 1] << '\n';
             }
+          file.close();
         }
       };
 
