@@ -206,22 +206,29 @@ namespace porofrac
 
     namespace
     {
-      /// The flow model of a coupled scene: the deck's flow with tight inner Newton tolerances.
+      /// The flow model of a coupled scene: the deck's flow with tight inner Newton tolerances
+      /// (with @p distributed, without the serial Newton matrix: distribute() follows).
       template <int dim>
       flow::FlowModel<dim>
-      make_inner_flow_model(const PhysicsParameters &parameters, const geometry::CutMesh<dim> &mesh)
+      make_inner_flow_model(const PhysicsParameters      &parameters,
+                            const geometry::CutMesh<dim> &mesh,
+                            const bool                    distributed)
       {
         const coupling::CouplingParameters &cp = parameters.coupling;
         // Inside coupled iterations the flow Newton must be converged tightly (see
         // CouplingParameters); the deck's tolerances are the upper bounds.
-        return flow::make_flow_model<dim>(parameters.flow, mesh, [&](flow::NewtonParameters &n) {
-          // At its noise floor (kinks of S and of the upwinding), accept an inner solve that meets
-          // the flow deck's own tolerances instead of cutting the step.
-          n.stagnation_update_tolerance = n.update_tolerance;
-          n.stagnation_mass_tolerance   = 1e-10; // the per-step conservation target
-          n.residual_tolerance = std::min(n.residual_tolerance, cp.inner_flow_residual_tolerance);
-          n.update_tolerance   = std::min(n.update_tolerance, cp.inner_flow_update_tolerance);
-        });
+        return flow::make_flow_model<dim>(
+          parameters.flow,
+          mesh,
+          [&](flow::NewtonParameters &n) {
+            // At its noise floor (kinks of S and of the upwinding), accept an inner solve that
+            // meets the flow deck's own tolerances instead of cutting the step.
+            n.stagnation_update_tolerance = n.update_tolerance;
+            n.stagnation_mass_tolerance   = 1e-10; // the per-step conservation target
+            n.residual_tolerance = std::min(n.residual_tolerance, cp.inner_flow_residual_tolerance);
+            n.update_tolerance   = std::min(n.update_tolerance, cp.inner_flow_update_tolerance);
+          },
+          distributed);
       }
 
 
@@ -305,7 +312,7 @@ namespace porofrac
                     physics.coupling.output_times)
           , context(context)
           , parameters(physics.coupling)
-          , flow(make_inner_flow_model(physics, mesh))
+          , flow(make_inner_flow_model(physics, mesh, context.communicator != MPI_COMM_SELF))
           , mech(mesh, physics.mechanics, context.verbose, context.timer)
           , distributed_mech(
               distributed_mesh ?

@@ -203,7 +203,10 @@ namespace porofrac
           , pieces(geometry::replicated_mesh_pieces(cell_owner, context.communicator))
           , model([&] {
             TimerOutput::Scope t(context.timer, "Flow: grid and solver set-up");
-            return flow::make_flow_model<dim>(parameters.flow, mesh);
+            return flow::make_flow_model<dim>(parameters.flow,
+                                              mesh,
+                                              {},
+                                              context.communicator != MPI_COMM_SELF);
           }())
           , grid(*model.grid)
           , solver(*model.solver)

@@ -163,7 +163,8 @@ namespace porofrac
     FlowModel<dim>
     make_flow_model(const FlowParameters                          &parameters,
                     const geometry::CutMesh<dim>                  &mesh,
-                    const std::function<void(NewtonParameters &)> &adjust_newton)
+                    const std::function<void(NewtonParameters &)> &adjust_newton,
+                    const bool                                     distributed)
     {
       parameters.validate();
       FlowModel<dim> model;
@@ -197,7 +198,8 @@ namespace porofrac
       grid.damaged_layer_porosity  = parameters.damaged_layer_porosity;
       grid.update_transmissibilities();
 
-      model.solver = std::make_unique<TwoPhaseSolver<dim>>(grid, model.rocks, model.newton);
+      model.solver =
+        std::make_unique<TwoPhaseSolver<dim>>(grid, model.rocks, model.newton, !distributed);
       TwoPhaseSolver<dim> &solver = *model.solver;
       solver.matrix_dirichlet     = parameters.matrix_dirichlet;
       solver.fracture_dirichlet   = parameters.fracture_dirichlet;
@@ -219,10 +221,12 @@ namespace porofrac
     template FlowModel<2>
     make_flow_model(const FlowParameters &,
                     const geometry::CutMesh<2> &,
-                    const std::function<void(NewtonParameters &)> &);
+                    const std::function<void(NewtonParameters &)> &,
+                    const bool);
     template FlowModel<3>
     make_flow_model(const FlowParameters &,
                     const geometry::CutMesh<3> &,
-                    const std::function<void(NewtonParameters &)> &);
+                    const std::function<void(NewtonParameters &)> &,
+                    const bool);
   } // namespace flow
 } // namespace porofrac

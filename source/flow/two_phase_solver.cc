@@ -29,12 +29,15 @@ namespace porofrac
     template <int dim>
     TwoPhaseSolver<dim>::TwoPhaseSolver(const TpfaGrid<dim>           &grid,
                                         const std::array<RockType, 2> &rocks,
-                                        const NewtonParameters        &parameters)
+                                        const NewtonParameters        &parameters,
+                                        const bool                     serial_pattern)
         : grid(grid)
         , rocks(rocks)
         , parameters(parameters)
     {
-      number_unknowns({}, 0);
+      number_unknowns({});
+      if (serial_pattern)
+        make_pattern({}, 0);
       virtual_pore_volume =
         1e-3 * total_pore_volume() / std::max(1u, grid.n_matrix_cells + grid.n_fracture_cells);
       linear_solver = create_serial_linear_solver(parameters.linear_solver, "Flow/Linear solver");
@@ -45,8 +48,7 @@ namespace porofrac
 
     template <int dim>
     void
-    TwoPhaseSolver<dim>::number_unknowns(const std::vector<unsigned int> &node_owner,
-                                         const unsigned int               rank)
+    TwoPhaseSolver<dim>::number_unknowns(const std::vector<unsigned int> &node_owner)
     {
       // Unknowns process by process (node order within each): one contiguous range each.
       std::vector<unsigned int> order(grid.n_nodes());
@@ -62,6 +64,15 @@ namespace porofrac
       for (const unsigned int i : order)
         if (!grid.is_dirichlet(i))
           node_dof[i] = n_free++;
+    }
+
+
+
+    template <int dim>
+    void
+    TwoPhaseSolver<dim>::make_pattern(const std::vector<unsigned int> &node_owner,
+                                      const unsigned int               rank)
+    {
       // The rows this process assembles (all of them without @p node_owner): a distributed
       // run keeps no pattern for the other processes' rows.
       const auto has_rows = [&](const unsigned int i) {
@@ -105,7 +116,8 @@ namespace porofrac
     {
       AssertDimension(node_owner.size(), grid.n_nodes());
       const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-      number_unknowns(node_owner, rank);
+      number_unknowns(node_owner);
+      make_pattern(node_owner, rank);
       owned_node.assign(grid.n_nodes(), false);
       IndexSet owned(2 * n_free);
       for (unsigned int i = 0; i < grid.n_nodes(); ++i)
@@ -756,6 +768,9 @@ namespace porofrac
             std::unique_ptr<TimerOutput::Scope> t;
             if (timer)
               t = std::make_unique<TimerOutput::Scope>(*timer, "Flow: assembly");
+            Assert(sparsity.n_rows() == 2 * n_free,
+                   ExcMessage("no Newton matrix: a solver built without its serial pattern "
+                              "needs distribute()"));
             assemble(state, old_state, dt, residual, &jacobian);
           }
           entry_slope_active = false;

@@ -41,13 +41,16 @@ namespace porofrac
      * Builds the model of @p parameters on @p mesh, with the checks that need the mesh:
      * Dirichlet boundary ids on the mesh, source expressions of x, y (, z) finite at the cell
      * centres (InputErrors naming the parameter). @p adjust_newton, if given, may change the
-     * Newton settings before the solver is built (coupled scenes tighten the tolerances).
+     * Newton settings before the solver is built (coupled scenes tighten the tolerances). With
+     * @p distributed the solver builds no serial Newton matrix: TwoPhaseSolver::distribute()
+     * must follow.
      */
     template <int dim>
     FlowModel<dim>
     make_flow_model(const FlowParameters                          &parameters,
                     const geometry::CutMesh<dim>                  &mesh,
-                    const std::function<void(NewtonParameters &)> &adjust_newton = {});
+                    const std::function<void(NewtonParameters &)> &adjust_newton = {},
+                    const bool                                     distributed   = false);
   } // namespace flow
 } // namespace porofrac
 

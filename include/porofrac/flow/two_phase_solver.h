@@ -78,9 +78,12 @@ namespace porofrac
       /// Also reachable as TwoPhaseSolver<dim>::EnergyExchange.
       using EnergyExchange = flow::EnergyExchange;
 
+      /// Without @p serial_pattern the Newton matrix is not built: distribute() must follow
+      /// before the first Newton step, and builds the rows of this process only.
       TwoPhaseSolver(const TpfaGrid<dim>           &grid,
                      const std::array<RockType, 2> &rocks,
-                     const NewtonParameters        &parameters);
+                     const NewtonParameters        &parameters,
+                     const bool                     serial_pattern = true);
 
       /**
        * Shares the Newton systems with the other processes of @p communicator
@@ -248,10 +251,13 @@ namespace porofrac
 
     private:
       /// Numbers the unknowns of the non-Dirichlet nodes, those of process 0 first if
-      /// @p node_owner is not empty, and makes the sparsity pattern and the Jacobian: of all
-      /// rows, or with @p node_owner of the rows of process @p rank's nodes only.
+      /// @p node_owner is not empty.
       void
-      number_unknowns(const std::vector<unsigned int> &node_owner, unsigned int rank);
+      number_unknowns(const std::vector<unsigned int> &node_owner);
+      /// Makes the sparsity pattern and the Jacobian: of all rows, or with @p node_owner of the
+      /// rows of process @p rank's nodes only.
+      void
+      make_pattern(const std::vector<unsigned int> &node_owner, unsigned int rank);
       /// Whether this process assembles the rows of node @p i.
       bool
       assembles(const unsigned int i) const
