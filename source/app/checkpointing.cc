@@ -80,7 +80,7 @@ namespace porofrac
       if (!context.writes_files())
         return *files[i];
       files[i]->open(context.path(name));
-      check_input(bool(*files[i]), "Output/Directory", "cannot write " + name);
+      check_input(bool(*files[i]), "Output/Directory", "cannot write '" + context.path(name) + "'");
       *files[i] << (restarting() ? restored_text[i] : header);
       files[i]->flush();
       return *files[i];
@@ -115,7 +115,9 @@ namespace porofrac
       collectively(context.communicator, [&]() {
         if (context.writes_files())
           for (unsigned int i = 0; i < names.size(); ++i)
-            check_input(bool(*files[i]), "Output/Directory", "cannot write " + names[i]);
+            check_input(bool(*files[i]),
+                        "Output/Directory",
+                        "cannot write '" + context.path(names[i]) + "'");
       });
       const auto &o = context.options;
       const bool  due_here =

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Output files that take no bytes (a full disk: each is a symbolic link to /dev/full, which
+// opens but fails every write) stop the run with an InputError naming the file, and
+// summary.json says so with the totals of the steps accepted until then. The short
+// fractured-square drainage, once per file: history.csv (caught after the first accepted step),
+// flow.pvd (at the first field file, t = 0), a sample line (at the end), and fractures.csv of the
+// six-fractures contact scene.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <porofrac/app/parameters.h>
+#include <porofrac/app/simulator.h>
+#include <porofrac/base/exceptions.h>
+#include <porofrac/io/deck.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  /// The first capture of @p pattern in the file @p file, or "none".
+  std::string
+  capture(const std::string &file, const std::string &pattern)
+  {
+    std::stringstream text;
+    text << std::ifstream(file).rdbuf();
+    const std::string s = text.str();
+    std::smatch       m;
+    return std::regex_search(s, m, std::regex(pattern)) ? std::string(m[1]) : "none";
+  }
+
+  void
+  run_on_full_disk(const std::string              &deck_file,
+                   const std::string              &full,
+                   const std::vector<std::string> &settings)
+  {
+    const std::string dir = "full-out";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::filesystem::create_symlink("/dev/full", dir + "/" + full);
+    dealii::ParameterHandler prm;
+    porofrac::app::declare_all_parameters(prm);
+    porofrac::io::Deck deck(prm);
+    const std::string  path =
+      (std::filesystem::path(__FILE__).parent_path() / deck_file).lexically_normal().string();
+    deck.read(path);
+    for (const auto &s : settings)
+      deck.set(s);
+    for (const char *s : {"Output/Verbosity=quiet", "Output/Timer output=none"})
+      deck.set(s);
+    std::ostringstream report;
+    std::string        outcome = "no error";
+    try
+      {
+        porofrac::app::run_scene<2>(prm, path, dir, report);
+      }
+    catch (const porofrac::InputError &e)
+      {
+        outcome = std::string("InputError: ") + e.what();
+      }
+    const std::string summary = dir + "/summary.json";
+    std::cout << full << " on a full disk: " << outcome << std::endl
+              << full << " on a full disk: summary.json status "
+              << capture(summary, "\"status\": *\"([^\"]*)\"") << ", reason "
+              << capture(summary, "\"reason\": *\"([^\"]*)\"") << ", time steps "
+              << capture(summary, "\"n_time_steps\": *([0-9]+)") << std::endl;
+    std::filesystem::remove_all(dir);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  // run_scene is collective over MPI_COMM_WORLD (one process here).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                        drainage = "../flow/fractured_square_drainage_short.prm";
+  run_on_full_disk(drainage, "history.csv", {});
+  run_on_full_disk(drainage, "flow.pvd", {"Output/Format=vtu"});
+  run_on_full_disk(drainage, "line_diagonal.csv", {"Flow/Sample lines=diagonal: (0, 0) (1, 1) 11"});
+  run_on_full_disk("../mechanics/six_fractures_active_set.prm", "fractures.csv", {});
+}
