@@ -7,8 +7,9 @@
 // add up to the mesh's (summary.json n_cells), and the fields the record declares; the same for
 // the mesh file (mesh.pvtu; mesh_fractures.vtu whole on rank 0). A file that cannot be written
 // (a directory in its place: a piece rank 1 writes; a sample line, fractures.csv or a
-// checkpoint rank 0 writes) stops both processes with the same InputError, the .pvd lists only the
-// files written whole, and summary.json says why. mpi: 2
+// checkpoint rank 0 writes) stops both processes with the same InputError, the .pvd lists only
+// the files written whole, and summary.json says why.
+// mpi: 2
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
@@ -182,8 +183,8 @@ namespace
     const auto status  = captures(summary, "\"status\": *\"([^\"]*)\"");
     const auto reason  = captures(summary, "\"reason\": *\"([^\"]*)\"");
     const auto steps   = captures(summary, "\"n_time_steps\": *([0-9]+)");
-    std::cout << blocked << " blocked, rank 0: " << outcomes[0] << std::endl
-              << blocked << " blocked, rank 1: " << outcomes[1] << std::endl;
+    for (unsigned int r = 0; r < outcomes.size(); ++r)
+      std::cout << blocked << " blocked, rank " << r << ": " << outcomes[r] << std::endl;
     if (!pvd.empty())
       {
         const auto files = captures(text_of(dir + "/" + pvd), "file=\"([^\"]+)\"");
