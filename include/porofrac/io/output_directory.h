@@ -8,6 +8,14 @@ namespace porofrac
 {
   namespace io
   {
+    /// The first line of the sample-line files line_<name>.csv (arc length, point, wetting
+    /// pressure), by which the clean-up tells them from a user's files of the same name.
+    inline std::string
+    sample_line_header(const unsigned int dim)
+    {
+      return dim == 2 ? "s,x,y,p_w" : "s,x,y,z,p_w";
+    }
+
     /**
      * The output directory of one run, held for the run's lifetime. Taking it creates the
      * directory if needed, checks that it can be written, takes the lock file `.porofrac.lock`
@@ -19,14 +27,6 @@ namespace porofrac
      * sample_line_header(), so that the directory never mixes the outputs of two runs. Other
      * files are left alone. The destructor releases the lock.
      */
-    /// The first line of the sample-line files line_<name>.csv (arc length, point, wetting
-    /// pressure), by which the clean-up tells them from a user's files of the same name.
-    inline std::string
-    sample_line_header(const unsigned int dim)
-    {
-      return dim == 2 ? "s,x,y,p_w" : "s,x,y,z,p_w";
-    }
-
     class OutputDirectory
     {
     public:

@@ -10,10 +10,10 @@ namespace porofrac
   namespace io
   {
     /**
-     * A text file of a run's results (fractures.csv, line_<name>.csv, ...). A file that cannot
-     * be opened (a directory in its place, no permission) or written whole (a full disk) is an
-     * InputError of Output/Directory naming it, raised by the constructor or by close(): a run
-     * never ends as if its results were written when they were not.
+     * A file of a run's results (fractures.csv, line_<name>.csv, field files, ...). A file that
+     * cannot be opened (a directory in its place, no permission) or written whole (a full disk)
+     * is an InputError of Output/Directory naming it, raised by the constructor or by close(): a
+     * run never ends as if its results were written when they were not.
      */
     class OutputFile
     {
