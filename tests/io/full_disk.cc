@@ -6,12 +6,6 @@
 // flow.pvd (at the first field file, t = 0), a sample line (at the end), and fractures.csv of the
 // six-fractures contact scene.
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-
-#include <porofrac/app/parameters.h>
-#include <porofrac/app/simulator.h>
-#include <porofrac/base/exceptions.h>
-#include <porofrac/io/deck.h>
 
 #include <filesystem>
 #include <fstream>
@@ -20,6 +14,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "../run_deck.h"
 
 namespace
 {
@@ -43,26 +39,8 @@ namespace
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     std::filesystem::create_symlink("/dev/full", dir + "/" + full);
-    dealii::ParameterHandler prm;
-    porofrac::app::declare_all_parameters(prm);
-    porofrac::io::Deck deck(prm);
-    const std::string  path =
-      (std::filesystem::path(__FILE__).parent_path() / deck_file).lexically_normal().string();
-    deck.read(path);
-    for (const auto &s : settings)
-      deck.set(s);
-    for (const char *s : {"Output/Verbosity=quiet", "Output/Timer output=none"})
-      deck.set(s);
-    std::ostringstream report;
-    std::string        outcome = "no error";
-    try
-      {
-        porofrac::app::run_scene<2>(prm, path, dir, report);
-      }
-    catch (const porofrac::InputError &e)
-      {
-        outcome = std::string("InputError: ") + e.what();
-      }
+    const std::string outcome =
+      porofrac_tests::run_deck(porofrac_tests::deck_path(__FILE__, deck_file), settings, dir);
     const std::string summary = dir + "/summary.json";
     std::cout << full << " on a full disk: " << outcome << std::endl
               << full << " on a full disk: summary.json status "

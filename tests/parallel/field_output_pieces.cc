@@ -11,12 +11,6 @@
 // the files written whole, and summary.json says why.
 // mpi: 2
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-
-#include <porofrac/app/parameters.h>
-#include <porofrac/app/simulator.h>
-#include <porofrac/base/exceptions.h>
-#include <porofrac/io/deck.h>
 
 #include <filesystem>
 #include <fstream>
@@ -25,6 +19,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "../run_deck.h"
 
 namespace
 {
@@ -85,23 +81,12 @@ namespace
                 const std::string              &pvd,
                 const std::vector<std::string> &settings)
   {
-    dealii::ParameterHandler prm;
-    porofrac::app::declare_all_parameters(prm);
-    porofrac::io::Deck deck(prm);
-    const std::string  path =
-      (std::filesystem::path(__FILE__).parent_path() / deck_file).lexically_normal().string();
-    deck.read(path);
-    for (const auto &s : settings)
-      deck.set(s);
-    for (const char *s :
-         {"Output/Format=vtu", "Output/Verbosity=quiet", "Output/Timer output=none"})
-      deck.set(s);
-    std::ostringstream report;
-    const int          dim = prm.get_integer("Dimension");
-    if (dim == 2)
-      porofrac::app::run_scene<2>(prm, path, dir, report);
-    else
-      porofrac::app::run_scene<3>(prm, path, dir, report);
+    std::vector<std::string> vtu = settings;
+    vtu.push_back("Output/Format=vtu");
+    const std::string outcome =
+      porofrac_tests::run_deck(porofrac_tests::deck_path(__FILE__, deck_file), vtu, dir);
+    if (outcome != "no error")
+      std::cout << deck_file << ": " << outcome << std::endl;
     // The other process may still be closing its last piece.
     MPI_Barrier(MPI_COMM_WORLD);
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
@@ -156,26 +141,8 @@ namespace
         std::filesystem::create_directories(dir + "/" + blocked);
       }
     MPI_Barrier(MPI_COMM_WORLD);
-    dealii::ParameterHandler prm;
-    porofrac::app::declare_all_parameters(prm);
-    porofrac::io::Deck deck(prm);
-    const std::string  path =
-      (std::filesystem::path(__FILE__).parent_path() / deck_file).lexically_normal().string();
-    deck.read(path);
-    for (const auto &s : settings)
-      deck.set(s);
-    for (const char *s : {"Output/Verbosity=quiet", "Output/Timer output=none"})
-      deck.set(s);
-    std::ostringstream report;
-    std::string        outcome = "no error";
-    try
-      {
-        porofrac::app::run_scene<2>(prm, path, dir, report, options);
-      }
-    catch (const porofrac::InputError &e)
-      {
-        outcome = std::string("InputError: ") + e.what();
-      }
+    const std::string outcome = porofrac_tests::run_deck(
+      porofrac_tests::deck_path(__FILE__, deck_file), settings, dir, options);
     const auto outcomes = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, outcome);
     if (rank != 0)
       return;
