@@ -8,9 +8,10 @@
 #include <porofrac/geometry/mesh_quality.h>
 #include <porofrac/geometry/simplex_tools.h>
 #include <porofrac/io/output_file.h>
+#include <porofrac/io/vtk_grid.h>
 
 #include <filesystem>
-#include <iomanip>
+#include <numeric>
 
 namespace porofrac
 {
@@ -29,69 +30,95 @@ namespace porofrac
                       const std::string             &format,
                       const std::vector<Point<dim>> &points,
                       const unsigned int             n_corners,
-                      const int                      vtk_type,
+                      const std::uint8_t             vtk_type,
                       const FractureFields          &fields)
       {
-        io::OutputFile file(filename);
-        std::ostream  &out = file.stream();
-        out << std::setprecision(17);
-        const std::size_t n_cells      = points.size() / n_corners;
-        auto              write_points = [&](const char *sep) {
-          for (const auto &p : points)
-            out << p[0] << ' ' << p[1] << ' ' << (dim == 3 ? p[dim - 1] : 0.) << sep;
-        };
-        if (format == "vtk")
+        io::VtkGrid               grid;
+        std::vector<std::int32_t> corners;
+        for (const auto &p : points)
           {
-            out << "# vtk DataFile Version 3.0\nPoroFrac fracture faces\nASCII\n"
-                << "DATASET UNSTRUCTURED_GRID\nPOINTS " << points.size() << " double\n";
-            write_points("\n");
-            out << "CELLS " << n_cells << ' ' << (n_corners + 1) * n_cells << '\n';
-            for (std::size_t i = 0; i < n_cells; ++i)
+            corners.push_back(grid.add_point(p[0], p[1], dim == 3 ? p[dim - 1] : 0.));
+            if (corners.size() == n_corners)
               {
-                out << n_corners;
-                for (unsigned int k = 0; k < n_corners; ++k)
-                  out << ' ' << n_corners * i + k;
-                out << '\n';
+                grid.add_cell(vtk_type, corners);
+                corners.clear();
               }
-            out << "CELL_TYPES " << n_cells << '\n';
-            for (std::size_t i = 0; i < n_cells; ++i)
-              out << vtk_type << '\n';
-            out << "CELL_DATA " << n_cells << '\n';
-            for (const auto &[name, values] : fields)
-              {
-                out << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
-                for (const double v : values)
-                  out << v << '\n';
-              }
-            file.close();
-            return;
           }
-        out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-            << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
-            << "\" NumberOfCells=\"" << n_cells
-            << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-            << "format=\"ascii\">\n";
-        write_points("\n");
-        out << "</DataArray>\n</Points>\n<Cells>\n"
-            << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < points.size(); ++i)
-          out << i << ' ';
-        out << "\n</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < n_cells; ++i)
-          out << n_corners * (i + 1) << ' ';
-        out << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-        for (std::size_t i = 0; i < n_cells; ++i)
-          out << vtk_type << ' ';
-        out << "\n</DataArray>\n</Cells>\n<CellData>\n";
-        for (const auto &[name, values] : fields)
+        grid.cell_data = fields;
+        io::write_vtk_grid(grid, filename, format, io::VtuEncoding::ascii);
+      }
+
+
+
+      /// VTK's vertex order of a linear cell as deal.II's vertex indices: the same for
+      /// simplices, counter-clockwise instead of lexicographic for quadrilaterals and hexahedra.
+      std::vector<unsigned int>
+      vtk_vertex_order(const ReferenceCell &cell)
+      {
+        if (cell == ReferenceCells::Quadrilateral)
+          return {0, 1, 3, 2};
+        if (cell == ReferenceCells::Hexahedron)
+          return {0, 1, 3, 2, 4, 5, 7, 6};
+        AssertThrow(cell.is_simplex(),
+                    ExcMessage("field output supports simplices, quadrilaterals and hexahedra"));
+        std::vector<unsigned int> order(cell.n_vertices());
+        std::iota(order.begin(), order.end(), 0U);
+        return order;
+      }
+
+
+
+      /**
+       * The cells of @p triangulation this process writes (@p pieces), with the mesh vertices
+       * they use as shared points and @p fields (plus "subdomain" when the file is split) as
+       * cell data.
+       */
+      template <int dim>
+      io::VtkGrid
+      cell_field_grid(const Triangulation<dim> &triangulation,
+                      const std::string        &format,
+                      const CellFields         &fields,
+                      const OutputPieces       &pieces)
+      {
+        io::VtkGrid grid;
+        grid.cell_data.reserve(fields.size() + 1);
+        for (const auto &field : fields)
+          grid.cell_data.emplace_back(field.first, std::vector<double>());
+        if (pieces.split(format))
+          grid.cell_data.emplace_back("subdomain", std::vector<double>());
+        const auto               &vertices = triangulation.get_vertices();
+        std::vector<std::int32_t> point_of_vertex(vertices.size(), -1);
+        std::vector<std::int32_t> corners;
+        for (const auto &cell : triangulation.active_cell_iterators())
           {
-            out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-            for (const double v : values)
-              out << v << ' ';
-            out << "\n</DataArray>\n";
+            const unsigned int c = cell->active_cell_index();
+            if (!cell->is_locally_owned() || !pieces.writes(c, format))
+              continue;
+            corners.clear();
+            for (const unsigned int v : vtk_vertex_order(cell->reference_cell()))
+              {
+                std::int32_t &point = point_of_vertex[cell->vertex_index(v)];
+                if (point < 0)
+                  {
+                    const Point<dim> &x = vertices[cell->vertex_index(v)];
+                    point = grid.add_point(x[0], dim > 1 ? x[1] : 0., dim > 2 ? x[2] : 0.);
+                  }
+                corners.push_back(point);
+              }
+            grid.add_cell(cell->reference_cell().vtk_linear_type(), corners);
+            for (unsigned int f = 0; f < fields.size(); ++f)
+              grid.cell_data[f].second.push_back(fields[f].second[c]);
+            if (pieces.split(format))
+              grid.cell_data.back().second.push_back(pieces.rank);
           }
-        out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-        file.close();
+        return grid;
+      }
+
+      /// The file name of process @p rank's piece of the field file @p name.
+      std::string
+      piece_name(const std::string &name, const unsigned int rank, const std::string &format)
+      {
+        return name + "_" + Utilities::int_to_string(rank, 4) + "." + format;
       }
     } // namespace
 
@@ -166,13 +193,32 @@ namespace porofrac
     {
       if (format == "none")
         return "";
-      // Cell data need no DoFHandler: the triangulation carries the patches.
-      DataOut<dim> data_out;
-      data_out.attach_triangulation(mesh.triangulation);
       for (const auto &[name, values] : fields)
-        data_out.add_data_vector(values, name, DataOut<dim>::type_cell_data);
-      return write_field_file(
-        data_out, mesh.triangulation, mesh.mapping(), 1, basename, format, pieces);
+        AssertThrow(values.size() == mesh.triangulation.n_active_cells(),
+                    ExcMessage("cell field '" + name + "' has the wrong size"));
+      const io::VtkGrid grid = cell_field_grid(mesh.triangulation, format, fields, pieces);
+      const auto        encoding =
+        (format == "vtu") ? io::VtuEncoding::compressed : io::VtuEncoding::ascii;
+      const std::string name = std::filesystem::path(basename).filename().string();
+      if (!pieces.split(format))
+        {
+          if (pieces.rank == 0)
+            io::write_vtk_grid(grid, basename + "." + format, format, encoding);
+          return name + "." + format;
+        }
+      io::write_vtk_grid(grid, piece_name(basename, pieces.rank, format), format, encoding);
+      if (format != "vtu")
+        return "";
+      if (pieces.rank == 0)
+        {
+          std::vector<std::string> files, names;
+          for (unsigned int r = 0; r < pieces.n_ranks; ++r)
+            files.push_back(piece_name(name, r, format));
+          for (const auto &field : grid.cell_data)
+            names.push_back(field.first);
+          io::write_pvtu_record(basename + ".pvtu", files, names);
+        }
+      return name + ".pvtu";
     }
 
 
@@ -228,22 +274,15 @@ namespace porofrac
         }
       data_out.add_data_vector(subdomain, "subdomain", DataOut<dim>::type_cell_data);
       data_out.build_patches(mapping, n_subdivisions);
-      const auto piece = [&](const unsigned int r) {
-        return name + "_" + Utilities::int_to_string(r, 4) + "." + format;
-      };
-      const std::string directory = std::filesystem::path(basename).parent_path().string();
-      const auto        path      = [&](const std::string &file) {
-        return directory.empty() ? file : directory + "/" + file;
-      };
-      write_data_out(data_out, path(piece(pieces.rank)), format);
+      write_data_out(data_out, piece_name(basename, pieces.rank, format), format);
       if (format != "vtu")
         return "";
       if (pieces.rank == 0)
         {
           std::vector<std::string> files;
           for (unsigned int r = 0; r < pieces.n_ranks; ++r)
-            files.push_back(piece(r));
-          io::OutputFile record(path(name + ".pvtu"));
+            files.push_back(piece_name(name, r, format));
+          io::OutputFile record(basename + ".pvtu");
           data_out.write_pvtu_record(record.stream(), files);
           record.close();
         }

@@ -111,8 +111,12 @@ namespace porofrac
     /// Named per-cell values (indexed by active cell index).
     using CellFields = std::vector<std::pair<std::string, Vector<double>>>;
 
-    /// Writes per-cell fields on the cut mesh as the field file @p basename (write_field_file);
-    /// returns the file a .pvd lists.
+    /**
+     * Writes per-cell fields on the cut mesh as the field file @p basename, whole or in pieces
+     * as @p pieces says (see write_field_file), without DataOut: the mesh vertices as points and
+     * each field as Float64 cell data (VTU: zlib-compressed binary; legacy VTK: ASCII). Every
+     * process of the run calls it. Returns the file a .pvd lists.
+     */
     template <int dim>
     std::string
     write_cell_fields(const CutMesh<dim> &mesh,
