@@ -568,10 +568,10 @@ namespace porofrac
                             const geometry::DistributedCutMesh<dim> *distributed_mesh)
     {
       CoupledRun<dim> run(parameters, mesh, context, cell_owner, distributed_mesh);
-      run.start();
       run_time_loop(
         run.stepper,
         "Coupling",
+        [&]() { run.start(); },
         [&](const double dt) { return run.attempt(dt); },
         [&]() { run.accept(); },
         [&](const bool restore_first) { run.write_accepted_state(restore_first); },

@@ -39,6 +39,7 @@ namespace porofrac
     void
     run_time_loop(AdaptiveTimeStepper                                 &stepper,
                   const std::string                                   &label,
+                  const std::function<void()>                         &start,
                   const std::function<StepOutcome(const double dt)>   &attempt,
                   const std::function<void()>                         &accept,
                   const std::function<void(const bool restore_first)> &write_accepted_state,
@@ -52,6 +53,21 @@ namespace porofrac
           on_stop();
       };
       const auto at = [&]() { return " at t = " + io::to_text(stepper.time()) + " s"; };
+      // An output file that cannot be written: the totals of the accepted steps (none at t = 0)
+      // still go to summary.json.
+      const auto recording_totals = [&](const std::function<void()> &write) {
+        try
+          {
+            write();
+          }
+        catch (const InputError &)
+          {
+            if (on_stop)
+              on_stop();
+            throw;
+          }
+      };
+      recording_totals(start);
       while (!stepper.finished())
         {
           std::string failure;
@@ -77,18 +93,7 @@ namespace porofrac
                                   ". The last accepted state is written.");
             }
           stepper.accept();
-          try
-            {
-              accept();
-            }
-          catch (const InputError &)
-            {
-              // An output file that cannot be written: the totals of the accepted steps still
-              // go to summary.json.
-              if (on_stop)
-                on_stop();
-              throw;
-            }
+          recording_totals(accept);
           if (dealii::Utilities::MPI::max(interrupt_signal(), communicator) != 0 &&
               !stepper.finished())
             {

@@ -456,10 +456,10 @@ namespace porofrac
                              const std::vector<unsigned int> &cell_owner)
     {
       FlowRun<dim> run(parameters, mesh, context, cell_owner);
-      run.start();
       run_time_loop(
         run.stepper,
         "Flow",
+        [&]() { run.start(); },
         [&](const double dt) { return run.attempt(dt); },
         [&]() { run.accept(); },
         [&](const bool restore_first) { run.write_accepted_state(restore_first); },

@@ -3,8 +3,9 @@
 // opens but fails every write) stop the run with an InputError naming the file, and
 // summary.json says so with the totals of the steps accepted until then. The short
 // fractured-square drainage, once per file: history.csv (caught after the first accepted step),
-// flow.pvd (at the first field file, t = 0), a sample line (at the end), and fractures.csv of the
-// six-fractures contact scene.
+// flow.pvd (at the first field file, t = 0: no time step), a sample line (at the end),
+// poromechanics.pvd of a coupled drainage (t = 0), and fractures.csv of the six-fractures
+// contact scene.
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
@@ -60,5 +61,6 @@ main(int argc, char **argv)
   run_on_full_disk(drainage, "history.csv", {});
   run_on_full_disk(drainage, "flow.pvd", {"Output/Format=vtu"});
   run_on_full_disk(drainage, "line_diagonal.csv", {"Flow/Sample lines=diagonal: (0, 0) (1, 1) 11"});
+  run_on_full_disk("../coupling/energy_drainage.prm", "poromechanics.pvd", {"Output/Format=vtu"});
   run_on_full_disk("../mechanics/six_fractures_active_set.prm", "fractures.csv", {});
 }

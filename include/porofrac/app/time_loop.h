@@ -22,7 +22,8 @@ namespace porofrac
     };
 
     /**
-     * The time loop shared by the time-dependent scenes. Per step it calls @p attempt with the
+     * The time loop shared by the time-dependent scenes. It first calls @p start (the state at
+     * t = 0, or the one a checkpoint restores, written). Per step it calls @p attempt with the
      * stepper's step size until a step converges, halving the step after each failure; an
      * attempt starts from the accepted state and must leave it intact when it fails. After a
      * converged attempt the stepper advances and @p accept records the step.
@@ -33,11 +34,13 @@ namespace porofrac
      * attempt changed it) and a SolverFailure or Interrupted naming @p label and the time is
      * thrown. The processes of @p communicator (that run the loop together) stop after the
      * same step when a signal reaches any of them. Before it is thrown, @p on_stop (if given)
-     * records what the scene reports of a finished run (summary.json totals).
+     * records what the scene reports of a finished run (summary.json totals); so it does before
+     * an InputError of @p start or @p accept (an output file that cannot be written) goes on.
      */
     void
     run_time_loop(AdaptiveTimeStepper                                 &stepper,
                   const std::string                                   &label,
+                  const std::function<void()>                         &start,
                   const std::function<StepOutcome(const double dt)>   &attempt,
                   const std::function<void()>                         &accept,
                   const std::function<void(const bool restore_first)> &write_accepted_state,
