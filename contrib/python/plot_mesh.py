@@ -26,8 +26,8 @@ from matplotlib.collections import LineCollection  # noqa: E402
 def read_legacy_vtk(path):
     """Returns points, cells and cell scalars of an ASCII legacy VTK unstructured grid.
 
-    POINT_DATA scalars (DataOut writes each simplex as its own patch, so a cell's points carry
-    its values) are averaged over the points of each cell.
+    POINT_DATA scalars (the displacement files, which DataOut writes with each cell as its own
+    patch) are averaged over the points of each cell.
     """
     with open(path) as f:
         tokens = f.read().split()
