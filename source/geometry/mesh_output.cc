@@ -89,13 +89,20 @@ namespace porofrac
         const auto               &vertices = triangulation.get_vertices();
         std::vector<std::int32_t> point_of_vertex(vertices.size(), -1);
         std::vector<std::int32_t> corners;
+        ReferenceCell             kind = ReferenceCells::Invalid;
+        std::vector<unsigned int> order;
         for (const auto &cell : triangulation.active_cell_iterators())
           {
             const unsigned int c = cell->active_cell_index();
             if (!cell->is_locally_owned() || !pieces.writes(c, format))
               continue;
+            if (cell->reference_cell() != kind)
+              {
+                kind  = cell->reference_cell();
+                order = vtk_vertex_order(kind);
+              }
             corners.clear();
-            for (const unsigned int v : vtk_vertex_order(cell->reference_cell()))
+            for (const unsigned int v : order)
               {
                 std::int32_t &point = point_of_vertex[cell->vertex_index(v)];
                 if (point < 0)
@@ -105,7 +112,7 @@ namespace porofrac
                   }
                 corners.push_back(point);
               }
-            grid.add_cell(cell->reference_cell().vtk_linear_type(), corners);
+            grid.add_cell(kind.vtk_linear_type(), corners);
             for (unsigned int f = 0; f < fields.size(); ++f)
               grid.cell_data[f].second.push_back(fields[f].second[c]);
             if (pieces.split(format))
@@ -119,6 +126,18 @@ namespace porofrac
       piece_name(const std::string &name, const unsigned int rank, const std::string &format)
       {
         return name + "_" + Utilities::int_to_string(rank, 4) + "." + format;
+      }
+
+      /// The file names of every process's piece of the field file @p basename, as a .pvtu
+      /// record next to them lists them.
+      std::vector<std::string>
+      piece_names(const std::string &basename, const unsigned int n_ranks)
+      {
+        const std::string        name = std::filesystem::path(basename).filename().string();
+        std::vector<std::string> files;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          files.push_back(piece_name(name, r, "vtu"));
+        return files;
       }
     } // namespace
 
@@ -211,12 +230,10 @@ namespace porofrac
         return "";
       if (pieces.rank == 0)
         {
-          std::vector<std::string> files, names;
-          for (unsigned int r = 0; r < pieces.n_ranks; ++r)
-            files.push_back(piece_name(name, r, format));
+          std::vector<std::string> names;
           for (const auto &field : grid.cell_data)
             names.push_back(field.first);
-          io::write_pvtu_record(basename + ".pvtu", files, names);
+          io::write_pvtu_record(basename + ".pvtu", piece_names(basename, pieces.n_ranks), names);
         }
       return name + ".pvtu";
     }
@@ -279,11 +296,8 @@ namespace porofrac
         return "";
       if (pieces.rank == 0)
         {
-          std::vector<std::string> files;
-          for (unsigned int r = 0; r < pieces.n_ranks; ++r)
-            files.push_back(piece_name(name, r, format));
           io::OutputFile record(basename + ".pvtu");
-          data_out.write_pvtu_record(record.stream(), files);
+          data_out.write_pvtu_record(record.stream(), piece_names(basename, pieces.n_ranks));
           record.close();
         }
       return name + ".pvtu";
