@@ -53,21 +53,23 @@ namespace porofrac
           on_stop();
       };
       const auto at = [&]() { return " at t = " + io::to_text(stepper.time()) + " s"; };
-      // An output file that cannot be written: the totals of the accepted steps (none at t = 0)
-      // still go to summary.json.
-      const auto recording_totals = [&](const std::function<void()> &write) {
+      // An output file that cannot be written: the totals of the accepted steps still go to
+      // summary.json, also at t = 0 (none); a restart that stopped after restoring the stepper
+      // has no totals to report.
+      const auto reporting_totals = [&](const std::function<void()> &write,
+                                        const bool                   may_restore) {
         try
           {
             write();
           }
         catch (const InputError &)
           {
-            if (on_stop)
+            if (on_stop && !(may_restore && stepper.step_number() > 0))
               on_stop();
             throw;
           }
       };
-      recording_totals(start);
+      reporting_totals(start, true);
       while (!stepper.finished())
         {
           std::string failure;
@@ -93,7 +95,7 @@ namespace porofrac
                                   ". The last accepted state is written.");
             }
           stepper.accept();
-          recording_totals(accept);
+          reporting_totals(accept, false);
           if (dealii::Utilities::MPI::max(interrupt_signal(), communicator) != 0 &&
               !stepper.finished())
             {

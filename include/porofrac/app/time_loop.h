@@ -35,7 +35,8 @@ namespace porofrac
      * thrown. The processes of @p communicator (that run the loop together) stop after the
      * same step when a signal reaches any of them. Before it is thrown, @p on_stop (if given)
      * records what the scene reports of a finished run (summary.json totals); so it does before
-     * an InputError of @p start or @p accept (an output file that cannot be written) goes on.
+     * an InputError of @p accept, or of @p start at step 0 (an output file that cannot be
+     * written), goes on.
      */
     void
     run_time_loop(AdaptiveTimeStepper                                 &stepper,
