@@ -23,6 +23,8 @@
 #include <sstream>
 #include <string>
 
+#include "../file_text.h"
+
 namespace fs = std::filesystem;
 
 namespace
@@ -30,9 +32,7 @@ namespace
   std::string
   text(const fs::path &file)
   {
-    std::stringstream s;
-    s << std::ifstream(file).rdbuf();
-    return s.str();
+    return porofrac_tests::text_of(file.string());
   }
 
   /// summary.json without its timing and memory lines.

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../file_text.h"
 #include "../run_deck.h"
 
 namespace
@@ -24,11 +25,8 @@ namespace
   std::string
   capture(const std::string &file, const std::string &pattern)
   {
-    std::stringstream text;
-    text << std::ifstream(file).rdbuf();
-    const std::string s = text.str();
-    std::smatch       m;
-    return std::regex_search(s, m, std::regex(pattern)) ? std::string(m[1]) : "none";
+    const auto found = porofrac_tests::captures(porofrac_tests::text_of(file), pattern);
+    return found.empty() ? "none" : found.front();
   }
 
   void

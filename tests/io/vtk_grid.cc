@@ -15,17 +15,12 @@
 #include <regex>
 #include <sstream>
 
+#include "../file_text.h"
 #include <zlib.h>
 
 namespace
 {
-  std::string
-  text_of(const std::string &file)
-  {
-    std::stringstream s;
-    s << std::ifstream(file).rdbuf();
-    return s.str();
-  }
+  using porofrac_tests::text_of;
 
   std::vector<unsigned char>
   base64_decode(const std::string &text)

@@ -20,29 +20,13 @@
 #include <string>
 #include <vector>
 
+#include "../file_text.h"
 #include "../run_deck.h"
 
 namespace
 {
-  std::string
-  text_of(const std::string &file)
-  {
-    std::stringstream text;
-    text << std::ifstream(file).rdbuf();
-    return text.str();
-  }
-
-  /// Every capture of @p pattern's first group in @p text.
-  std::vector<std::string>
-  captures(const std::string &text, const std::string &pattern)
-  {
-    std::vector<std::string> result;
-    const std::regex         re(pattern);
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator();
-         ++it)
-      result.push_back((*it)[1]);
-    return result;
-  }
+  using porofrac_tests::captures;
+  using porofrac_tests::text_of;
 
   /// Checks one .pvtu record and its pieces; prints its fields once (@p print_fields).
   bool
@@ -123,6 +107,9 @@ namespace
 
 namespace
 {
+  using porofrac_tests::captures;
+  using porofrac_tests::text_of;
+
   /// @p deck_file run again with the file @p blocked of the output directory blocked by a
   /// directory of its name; prints each process's outcome and what the .pvd (if the run has
   /// one) and summary.json say.
