@@ -203,9 +203,11 @@ namespace porofrac
       prm.declare_entry("Report linear solve time",
                         "false",
                         Patterns::Bool(),
-                        "Also time one linear elasticity solve (every fracture open, UMFPACK "
-                        "factorization + solve) on the same mesh; written to summary.json "
-                        "(mechanics/linear_solve_time_s).");
+                        "Also time one linear elasticity solve (every fracture open) on the "
+                        "same mesh: serial runs by UMFPACK (factorization + solve), distributed "
+                        "runs by the counterpart of Distributed linear solver (iterative: CG "
+                        "with the same AMG to Linear solver tolerance; direct: MUMPS); written "
+                        "to summary.json (mechanics/linear_solve_time_s, contact_linear_ratio).");
       prm.declare_entry("Write P2 reconstruction",
                         "false",
                         Patterns::Bool(),

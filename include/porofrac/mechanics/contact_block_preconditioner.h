@@ -9,6 +9,7 @@
 
 #include <porofrac/base/mumps_factorization.h>
 #include <porofrac/mechanics/distributed_elasticity_system.h>
+#include <porofrac/mechanics/elasticity_amg.h>
 
 #include <memory>
 #include <vector>
@@ -30,9 +31,8 @@ namespace porofrac
      * complement S = D - W B_0 K^-1 B_0^T, approximated by S~ = D - W G with
      * G = B_0 diag(K)^-1 B_0^T, formed once (the approximation PyLith uses for its fault
      * blocks). S~ couples the faces that share displacement dofs; it is small (dim per face) and
-     * is factorized by MUMPS whenever the face rows change. K~^-1 is one V-cycle of smoothed-
-     * aggregation AMG (Trilinos ML) on K with the rigid-body modes as near null space (or of
-     * plain aggregation: the tentative prolongator, deck entry Mechanics/AMG prolongator).
+     * is factorized by MUMPS whenever the face rows change. K~^-1 is one V-cycle of ElasticityAmg
+     * (aggregation AMG on K with the rigid-body modes).
      * (doc/parallel.md)
      */
     template <int dim>
@@ -63,13 +63,8 @@ namespace porofrac
       }
 
     private:
-      /// The rigid-body modes of the owned displacement dofs, mode by mode.
-      void
-      make_rigid_body_modes();
-
       const DistributedElasticitySystem<dim> &system;
-      std::vector<double>                     modes;
-      TrilinosWrappers::PreconditionAMG       amg;
+      ElasticityAmg<dim>                      amg;
       TrilinosWrappers::SparseMatrix          G, schur;
       MumpsFactorization                      schur_lu;
       mutable VectorType                      r_u, r_lambda, y_u, y_lambda;
