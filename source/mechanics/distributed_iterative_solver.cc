@@ -31,7 +31,8 @@ namespace porofrac
        * Safeguard: where the diagonal approximation of the multiplier Schur complement fails
        * (semi-smooth Newton rows with large lambda_n couplings, e.g. the second iterate from
        * the open guess, doc/parallel.md), GMRES stagnates; after Max linear iterations the step
-       * is solved by MUMPS instead, and counted (statistics: direct fallbacks).
+       * is solved by MUMPS instead, and counted (statistics: direct fallbacks). So is a step
+       * whose approximation is singular and cannot be factorized.
        */
       template <int dim>
       class DistributedIterativeSolver : public DistributedContactLinearSolver<dim>
@@ -71,7 +72,7 @@ namespace porofrac
           if (!ready || !same_owned_rows(system, rows, current_rows))
             {
               jacobian.assemble(rows);
-              preconditioner->set_rows(rows);
+              set_up_preconditioner(rows);
               current_rows = rows;
               ready        = true;
               ++this->stats.factorizations;
@@ -83,30 +84,58 @@ namespace porofrac
                                         typename SolverGMRES<VectorType>::AdditionalData(102,
                                                                                          true));
           x = 0;
-          try
-            {
-              gmres.solve(jacobian, x, rhs, *preconditioner);
-            }
-          catch (const SolverControl::NoConvergence &)
-            {
-              if (!whole_jacobian)
-                whole_jacobian = std::make_unique<DistributedJacobian<dim>>(
-                  system, DistributedJacobian<dim>::Storage::whole_matrix);
-              whole_jacobian->assemble(rows);
-              fallback.factorize(whole_jacobian->matrix());
-              fallback.solve(x, rhs);
-              ++this->stats.direct_fallbacks;
-              std::ostringstream memory;
-              memory << std::fixed << std::setprecision(1)
-                     << fallback.estimated_memory_mb() / 1024.;
-              progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
-                       << " iterations; MUMPS solved this step (estimated memory " << memory.str()
-                       << " GB)" << std::endl;
-            }
+          if (!preconditioner_usable)
+            solve_directly(rows, rhs, x);
+          else
+            try
+              {
+                gmres.solve(jacobian, x, rhs, *preconditioner);
+              }
+            catch (const SolverControl::NoConvergence &)
+              {
+                progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
+                         << " iterations; ";
+                solve_directly(rows, rhs, x);
+              }
           this->stats.linear_iterations += control.last_step();
           this->stats.direct_workspace_retries =
             fallback.workspace_retries() + preconditioner->workspace_retries();
           this->stats.time_solves += clock.wall_time();
+        }
+
+        /// The preconditioner for @p rows; where its Schur complement approximation S~ is
+        /// singular (multipliers that load no displacement and whose face rows leave them free,
+        /// doc/algorithms.md §2.1), the steps with these rows are solved by MUMPS instead.
+        void
+        set_up_preconditioner(const FaceRows<dim> &rows)
+        {
+          try
+            {
+              preconditioner->set_rows(rows);
+              preconditioner_usable = true;
+            }
+          catch (const SolverFailure &failure)
+            {
+              preconditioner_usable = false;
+              progress << "    " << failure.what() << "; ";
+            }
+        }
+
+        /// The step by MUMPS on the whole Jacobian, counted as a direct fallback.
+        void
+        solve_directly(const FaceRows<dim> &rows, const VectorType &rhs, VectorType &x)
+        {
+          if (!whole_jacobian)
+            whole_jacobian = std::make_unique<DistributedJacobian<dim>>(
+              system, DistributedJacobian<dim>::Storage::whole_matrix);
+          whole_jacobian->assemble(rows);
+          fallback.factorize(whole_jacobian->matrix());
+          fallback.solve(x, rhs);
+          ++this->stats.direct_fallbacks;
+          std::ostringstream memory;
+          memory << std::fixed << std::setprecision(1) << fallback.estimated_memory_mb() / 1024.;
+          progress << "MUMPS solved this step (estimated memory " << memory.str() << " GB)"
+                   << std::endl;
         }
 
         void
@@ -131,7 +160,8 @@ namespace porofrac
         MumpsFactorization                               fallback;
         ConditionalOStream                              &progress;
         std::unique_ptr<ContactBlockPreconditioner<dim>> preconditioner;
-        bool                                             ready = false;
+        bool                                             ready                 = false;
+        bool                                             preconditioner_usable = false;
         FaceRows<dim>                                    current_rows;
       };
 
@@ -141,7 +171,8 @@ namespace porofrac
         "modes on the elasticity block, the multiplier Schur complement approximated with "
         "diag(K), factorized by MUMPS; doc/parallel.md), to the relative residual "
         "min(Linear solver tolerance, Linear solver forcing x the contact residual); a step "
-        "whose GMRES does not converge in Max linear iterations is solved by MUMPS.";
+        "whose GMRES does not converge in Max linear iterations, or whose Schur complement "
+        "approximation is singular, is solved by MUMPS.";
 
       template <int dim>
       std::unique_ptr<DistributedContactLinearSolver<dim>>
