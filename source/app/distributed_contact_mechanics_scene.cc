@@ -4,12 +4,9 @@
 
 #include <porofrac/app/contact_mechanics_scene.h>
 #include <porofrac/app/contact_report.h>
+#include <porofrac/app/linear_solve_report.h>
 #include <porofrac/base/mpi_tools.h>
 #include <porofrac/mechanics/distributed_contact_problem.h>
-#include <porofrac/mechanics/linear_elasticity_solve.h>
-
-#include <iomanip>
-#include <sstream>
 
 namespace porofrac
 {
@@ -19,54 +16,6 @@ namespace porofrac
 
     namespace
     {
-      /**
-       * Mechanics/Report linear solve time of a distributed run: one linear elasticity solve
-       * (every fracture open) by the run's distributed solver on its mesh, against the contact
-       * solve's time (summary.json mechanics/linear_solve_time_s, contact_linear_ratio), and how
-       * far its displacement lies from the contact solution (zero when every face is open and
-       * lambda = 0). Collective.
-       */
-      template <int dim>
-      void
-      report_linear_solve(const mechanics::DistributedContactProblem<dim> &problem,
-                          const PhysicsParameters                         &parameters,
-                          io::RunContext                                  &context)
-      {
-        const auto result =
-          mechanics::solve_linear_elasticity(problem.get_system(), parameters.mechanics);
-        auto difference = result.displacement;
-        difference -= problem.displacement();
-        const double relative = difference.l2_norm() / problem.displacement().l2_norm();
-        const double time     = result.set_up_time + result.solve_time;
-        if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
-          return;
-        context.report << "Mechanics: one linear elasticity solve (fractures open, "
-                       << result.solver << "): ";
-        if (result.solver == "AMG-CG")
-          context.report << result.iterations << " iterations, ";
-        if (!result.converged)
-          context.report << "failed" << std::endl;
-        else
-          {
-            std::ostringstream text;
-            text << std::scientific << std::setprecision(1) << relative;
-            context.report << "displacement differs from the contact solution by " << text.str()
-                           << " (relative l2)" << std::endl;
-          }
-        context.progress << "    one linear elasticity solve: " << result.set_up_time
-                         << " s set-up, " << result.solve_time << " s solve" << std::endl;
-        io::Json &m                           = context.summary["mechanics"];
-        m["linear_solve_solver"]              = result.solver;
-        m["linear_solve_converged"]           = result.converged;
-        m["linear_solve_iterations"]          = result.iterations;
-        m["linear_solve_set_up_time_s"]       = result.set_up_time;
-        m["linear_solve_time_s"]              = time;
-        m["linear_solve_relative_difference"] = relative;
-        m["contact_linear_ratio"] = context.summary["contact_solve_time_s"].as_number() / time;
-      }
-
-
-
       /// The deck's postprocessors, on rank 0, on a serial ContactProblem that holds the
       /// distributed solution (gathered there); its matrices are assembled only for the
       /// postprocessors that need them. Collective.
@@ -144,14 +93,9 @@ namespace porofrac
                                                       context.output_format);
         });
       }
-      // The distributed linear solve replaces the serial postprocessor's UMFPACK one.
-      PhysicsParameters on_rank_0 = parameters;
       if (parameters.mechanics.reports.linear_solve_time)
-        {
-          report_linear_solve(problem, parameters, context);
-          on_rank_0.mechanics.reports.linear_solve_time = false;
-        }
-      run_postprocessors_on_rank_0(on_rank_0, mesh, problem, context);
+        report_linear_elasticity_solve(problem, context);
+      run_postprocessors_on_rank_0(without_serial_linear_solve(parameters), mesh, problem, context);
     }
 
     template void

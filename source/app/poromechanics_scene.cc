@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <porofrac/app/checkpointing.h>
+#include <porofrac/app/linear_solve_report.h>
 #include <porofrac/app/poromechanics_scene.h>
 #include <porofrac/app/time_loop.h>
 #include <porofrac/base/mpi_tools.h>
@@ -337,9 +338,12 @@ namespace porofrac
         if (context.communicator != MPI_COMM_SELF)
           flow.solver->distribute(context.communicator, flow.grid->node_owners(cell_owner));
         context.progress << "*** Poromechanics: contact mechanics set-up" << std::endl;
-        // With the distributed contact problem the serial one only holds its state: no K.
-        mech.setup(distributed_mech ? mechanics::SystemAssembly::loads :
-                                      mechanics::SystemAssembly::matrices);
+        // With the distributed contact problem the serial one only holds its state: no K,
+        // unless a postprocessor solves with it (Iteration table).
+        const bool state_only = distributed_mech && !postprocessors_need_system_matrices<dim>(
+                                                      without_serial_linear_solve(physics));
+        mech.setup(state_only ? mechanics::SystemAssembly::loads :
+                                mechanics::SystemAssembly::matrices);
         if (distributed_mech)
           distributed_mech->setup();
         context.summary["n_dofs_mechanics"] = mech.n_dofs();
@@ -515,7 +519,12 @@ namespace porofrac
         flow::report_linear_solver(pm.flow.solver->linear_solver_name(),
                                    pm.flow.solver->linear_statistics(),
                                    context.report);
-        SceneView<dim> scene{mesh, physics};
+        // A distributed contact problem times its own linear solve; the serial copy has no K.
+        if (distributed_mech && physics.mechanics.reports.linear_solve_time)
+          report_linear_elasticity_solve(*distributed_mech, context);
+        const PhysicsParameters postprocessing =
+          distributed_mech ? without_serial_linear_solve(physics) : physics;
+        SceneView<dim> scene{mesh, postprocessing};
         scene.mechanics     = &mech;
         scene.flow          = &flow;
         scene.poromechanics = &pm;

@@ -207,7 +207,8 @@ namespace porofrac
                         "same mesh: serial runs by UMFPACK (factorization + solve), distributed "
                         "runs by the counterpart of Distributed linear solver (iterative: CG "
                         "with the same AMG to Linear solver tolerance; direct: MUMPS); written "
-                        "to summary.json (mechanics/linear_solve_time_s, contact_linear_ratio).");
+                        "to summary.json (mechanics/linear_solve_time_s and, in contact mechanics "
+                        "scenes, contact_linear_ratio).");
       prm.declare_entry("Write P2 reconstruction",
                         "false",
                         Patterns::Bool(),
