@@ -22,7 +22,9 @@ namespace porofrac
         mechanics::solve_linear_elasticity(problem.get_system(), problem.get_parameters());
       auto difference = result.displacement;
       difference -= problem.displacement();
-      const double relative = difference.l2_norm() / problem.displacement().l2_norm();
+      // Absolute where the contact displacement is zero (no load).
+      const double norm     = problem.displacement().l2_norm();
+      const double relative = norm > 0 ? difference.l2_norm() / norm : difference.l2_norm();
       const double time     = result.set_up_time + result.solve_time;
       if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
         return;
@@ -41,12 +43,14 @@ namespace porofrac
         }
       context.progress << "    one linear elasticity solve: " << result.set_up_time << " s set-up, "
                        << result.solve_time << " s solve" << std::endl;
-      io::Json &m                           = context.summary["mechanics"];
-      m["linear_solve_solver"]              = result.solver;
-      m["linear_solve_converged"]           = result.converged;
-      m["linear_solve_iterations"]          = result.iterations;
-      m["linear_solve_set_up_time_s"]       = result.set_up_time;
-      m["linear_solve_time_s"]              = time;
+      io::Json &m                     = context.summary["mechanics"];
+      m["linear_solve_solver"]        = result.solver;
+      m["linear_solve_converged"]     = result.converged;
+      m["linear_solve_iterations"]    = result.iterations;
+      m["linear_solve_set_up_time_s"] = result.set_up_time;
+      m["linear_solve_time_s"]        = time;
+      if (!result.converged)
+        return;
       m["linear_solve_relative_difference"] = relative;
       if (context.summary.has("contact_solve_time_s"))
         m["contact_linear_ratio"] = context.summary["contact_solve_time_s"].as_number() / time;

@@ -90,6 +90,9 @@ namespace porofrac
         {
           // Collective; a contact failure is thrown on every process.
           distributed->set_equivalent_pressures(p_matrix, p_fracture, parameters.biot_coefficient);
+          // The serial copy's loads too (a vector update), for what solves it again
+          // (the Iteration table).
+          mechanics.set_equivalent_pressures(p_matrix, p_fracture, parameters.biot_coefficient);
           count(distributed->solve(/*warm_start=*/true));
           Vector<double> u, lambda;
           distributed->replicate_state(mechanics.get_dof_handler(), u, lambda);
