@@ -17,7 +17,8 @@ namespace porofrac
     template <int dim>
     ContactBlockPreconditioner<dim>::ContactBlockPreconditioner(
       const DistributedElasticitySystem<dim> &system,
-      const bool                              smoothed_prolongator)
+      const bool                              smoothed_prolongator,
+      const double                            schur_scaling)
         : system(system)
         , amg(system, smoothed_prolongator)
         , schur_lu("contact preconditioner (multiplier Schur complement)")
@@ -25,7 +26,7 @@ namespace porofrac
       const MPI_Comm comm = system.get_communicator();
       const auto    &K    = system.get_constrained_matrix();
 
-      // G = B_0 diag(K)^-1 B_0^T, and the pattern of S~: per owned face, the union of the G
+      // G = gamma B_0 diag(K)^-1 B_0^T, and the pattern of S~: per owned face, the union of the G
       // rows of its components and its diagonal block.
       VectorType inverse_diagonal(system.owned_displacements(), comm);
       for (const auto i : system.owned_displacements())
@@ -33,6 +34,7 @@ namespace porofrac
       inverse_diagonal.compress(VectorOperation::insert);
       const auto &Bt = system.get_free_coupling_transpose();
       Bt.Tmmult(G, Bt, inverse_diagonal);
+      G *= schur_scaling;
       const IndexSet        &rows = system.owned_multipliers();
       DynamicSparsityPattern dsp(rows.size(), rows.size(), rows);
       // The multiplier stabilization (doc/algorithms.md §2.2) adds its S to the face rows.

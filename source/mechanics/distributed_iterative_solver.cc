@@ -53,7 +53,8 @@ namespace porofrac
           TimerOutput::Scope t(timer, "Mechanics: AMG and multiplier block setup");
           preconditioner =
             std::make_unique<ContactBlockPreconditioner<dim>>(system,
-                                                              parameters.amg_smoothed_prolongator);
+                                                              parameters.amg_smoothed_prolongator,
+                                                              parameters.schur_scaling);
         }
 
         void

@@ -29,10 +29,10 @@ namespace porofrac
      * The displacements are eliminated first, so that the preconditioner holds where D is zero
      * (stick faces, the normal rows of slip faces): the multiplier block is the Schur
      * complement S = D - W B_0 K^-1 B_0^T, approximated by S~ = D - W G with
-     * G = B_0 diag(K)^-1 B_0^T, formed once (the approximation PyLith uses for its fault
-     * blocks). S~ couples the faces that share displacement dofs; it is small (dim per face) and
-     * is factorized by MUMPS whenever the face rows change. K~^-1 is one V-cycle of ElasticityAmg
-     * (aggregation AMG on K with the rigid-body modes).
+     * G = gamma B_0 diag(K)^-1 B_0^T (gamma: Mechanics/Schur complement scaling), formed once (the
+     * approximation PyLith uses for its fault blocks). S~ couples the faces that share displacement
+     * dofs; it is small (dim per face) and is factorized by MUMPS whenever the face rows change.
+     * K~^-1 is one V-cycle of ElasticityAmg (aggregation AMG on K with the rigid-body modes).
      * (doc/parallel.md)
      */
     template <int dim>
@@ -42,9 +42,10 @@ namespace porofrac
       using VectorType = TrilinosWrappers::MPI::Vector;
 
       /// Builds the AMG hierarchy of K (smoothed aggregation, or plain aggregation without
-      /// @p smoothed_prolongator) and G.
+      /// @p smoothed_prolongator) and G, scaled by @p schur_scaling.
       ContactBlockPreconditioner(const DistributedElasticitySystem<dim> &system,
-                                 bool                                    smoothed_prolongator);
+                                 bool                                    smoothed_prolongator,
+                                 double                                  schur_scaling = 1);
       ~ContactBlockPreconditioner();
 
       /// S~ for the face rows @p rows; factorizes it.

@@ -132,6 +132,9 @@ namespace porofrac
       /// Iterative linear solver: smoothed-aggregation AMG, else the unsmoothed (tentative)
       /// prolongator.
       bool amg_smoothed_prolongator = true;
+      /// Iterative linear solver: gamma in the multiplier block S~ = D - gamma W B_0 diag(K)^-1
+      /// B_0^T of its preconditioner.
+      double schur_scaling = 1;
 
       ContactReports reports;
     };
