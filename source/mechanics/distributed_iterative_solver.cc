@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <memory>
 #include <sstream>
+#include <string>
 
 namespace porofrac
 {
@@ -86,7 +87,10 @@ namespace porofrac
                                                                                          true));
           x = 0;
           if (!preconditioner_usable)
-            solve_directly(rows, rhs, x);
+            solve_directly(rows,
+                           rhs,
+                           x,
+                           "the preconditioner's Schur complement approximation is singular");
           else
             try
               {
@@ -94,9 +98,10 @@ namespace porofrac
               }
             catch (const SolverControl::NoConvergence &)
               {
-                progress << "    GMRES did not reach " << tolerance << " in " << max_iterations
-                         << " iterations; ";
-                solve_directly(rows, rhs, x);
+                std::ostringstream reason;
+                reason << "GMRES did not reach " << tolerance << " in " << max_iterations
+                       << " iterations";
+                solve_directly(rows, rhs, x, reason.str());
               }
           this->stats.linear_iterations += control.last_step();
           this->stats.direct_workspace_retries =
@@ -118,13 +123,17 @@ namespace porofrac
           catch (const SolverFailure &failure)
             {
               preconditioner_usable = false;
-              progress << "    " << failure.what() << "; ";
+              progress << "    " << failure.what() << std::endl;
             }
         }
 
-        /// The step by MUMPS on the whole Jacobian, counted as a direct fallback.
+        /// The step by MUMPS on the whole Jacobian, counted as a direct fallback; @p reason
+        /// goes to the progress output.
         void
-        solve_directly(const FaceRows<dim> &rows, const VectorType &rhs, VectorType &x)
+        solve_directly(const FaceRows<dim> &rows,
+                       const VectorType    &rhs,
+                       VectorType          &x,
+                       const std::string   &reason)
         {
           if (!whole_jacobian)
             whole_jacobian = std::make_unique<DistributedJacobian<dim>>(
@@ -135,8 +144,8 @@ namespace porofrac
           ++this->stats.direct_fallbacks;
           std::ostringstream memory;
           memory << std::fixed << std::setprecision(1) << fallback.estimated_memory_mb() / 1024.;
-          progress << "MUMPS solved this step (estimated memory " << memory.str() << " GB)"
-                   << std::endl;
+          progress << "    " << reason << "; MUMPS solved this step (estimated memory "
+                   << memory.str() << " GB)" << std::endl;
         }
 
         void
