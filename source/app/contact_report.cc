@@ -29,7 +29,8 @@ namespace porofrac
                        << std::endl;
       if (solution.statistics.direct_fallbacks > 0)
         context.report << "Mechanics: " << solution.statistics.direct_fallbacks
-                       << " linear solves fell back from the Krylov solver to the direct solver"
+                       << " linear solves fell back from the Krylov solver to the direct solver ("
+                       << solution.statistics.fallback_factorizations << " factorizations)"
                        << std::endl;
       if (solution.statistics.direct_workspace_retries > 0)
         context.report << "Mechanics: " << solution.statistics.direct_workspace_retries
@@ -112,6 +113,7 @@ namespace porofrac
       m["linear_iterations"]               = s.linear_iterations;
       m["linear_direct_fallbacks"]         = s.direct_fallbacks;
       m["linear_direct_workspace_retries"] = s.direct_workspace_retries;
+      m["linear_fallback_factorizations"]  = s.fallback_factorizations;
       add_iteration_history(s, m);
       return m;
     }

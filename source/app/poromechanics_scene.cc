@@ -168,6 +168,7 @@ namespace porofrac
             m["linear_iterations"]               = linear[1];
             m["linear_direct_fallbacks"]         = linear[2];
             m["linear_direct_workspace_retries"] = linear[3];
+            m["linear_fallback_factorizations"]  = linear[4];
           }
         m["converged"] = true;
         m["n_open"]    = c[0];
@@ -195,8 +196,13 @@ namespace porofrac
                << stored.total() << " J" << std::defaultfloat << std::endl
                << "Coupling: iterations: coupling " << totals.coupling << ", map evaluations "
                << totals.maps << ", flow Newton " << totals.flow << ", mechanics "
-               << totals.mechanics << std::endl
-               << "Coupling: mass balance error per step below 1e-10: "
+               << totals.mechanics << std::endl;
+        const auto &linear = pm.contact_linear_totals();
+        if (pm.distributed_contact() && linear[2] > 0)
+          report << "Coupling: " << linear[2]
+                 << " contact linear solves fell back from the Krylov solver to the direct solver ("
+                 << linear[4] << " factorizations)" << std::endl;
+        report << "Coupling: mass balance error per step below 1e-10: "
                << (totals.mass_error_max <= 1e-10 ? "yes" : "NO") << std::endl
                << "Coupling: energy inequality (19) holds at every step: "
                << (energy.max_violation() <= 1e-6 ? "yes" : "NO") << std::endl;

@@ -85,6 +85,7 @@ namespace porofrac
         linear_totals[1] += s.linear_iterations;
         linear_totals[2] += s.direct_fallbacks;
         linear_totals[3] += s.direct_workspace_retries;
+        linear_totals[4] += s.fallback_factorizations;
       };
       if (distributed)
         {
@@ -418,7 +419,12 @@ namespace porofrac
       c.get("aperture", grid.aperture);
       std::vector<double> totals;
       c.get("contact linear solves", totals);
-      check_input(totals.size() == linear_totals.size(), "--restart", "malformed checkpoint");
+      // Checkpoints written before the fallback factorizations were counted hold 4 totals.
+      check_input(totals.size() == linear_totals.size() ||
+                    totals.size() == linear_totals.size() - 1,
+                  "--restart",
+                  "malformed checkpoint");
+      linear_totals.fill(0);
       std::copy(totals.begin(), totals.end(), linear_totals.begin());
       grid.update_transmissibilities();
       set_mechanics_state(u_old, lambda_old);

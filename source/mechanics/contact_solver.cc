@@ -444,9 +444,10 @@ namespace porofrac
     {
       const ContactLinearSolverStatistics &now = linear_solver->statistics();
       stats.factorizations                     = now.factorizations - start.factorizations;
-      stats.reused_factorizations = now.reused_factorizations - start.reused_factorizations;
-      stats.linear_iterations     = now.linear_iterations - start.linear_iterations;
-      stats.direct_fallbacks      = now.direct_fallbacks - start.direct_fallbacks;
+      stats.reused_factorizations   = now.reused_factorizations - start.reused_factorizations;
+      stats.linear_iterations       = now.linear_iterations - start.linear_iterations;
+      stats.direct_fallbacks        = now.direct_fallbacks - start.direct_fallbacks;
+      stats.fallback_factorizations = now.fallback_factorizations - start.fallback_factorizations;
       stats.direct_workspace_retries =
         now.direct_workspace_retries - start.direct_workspace_retries;
       stats.time_factorization = now.time_factorization - start.time_factorization;

@@ -101,7 +101,8 @@ namespace porofrac
           factorized      = true;
           factorized_rows = rows;
           ++this->stats.factorizations;
-          this->stats.direct_workspace_retries = lu.workspace_retries();
+          this->stats.direct_workspace_retries   = lu.workspace_retries();
+          this->stats.estimated_direct_memory_mb = lu.estimated_memory_mb();
           this->stats.time_factorization += clock.wall_time();
         }
 

@@ -5,7 +5,6 @@
 #include <deal.II/lac/solver_gmres.h>
 
 #include <porofrac/base/exceptions.h>
-#include <porofrac/base/mumps_factorization.h>
 #include <porofrac/mechanics/contact_block_preconditioner.h>
 #include <porofrac/mechanics/distributed_contact_linear_solver.h>
 
@@ -32,8 +31,9 @@ namespace porofrac
        * Safeguard: where the diagonal approximation of the multiplier Schur complement fails
        * (semi-smooth Newton rows with large lambda_n couplings, e.g. the second iterate from
        * the open guess, doc/parallel.md), GMRES stagnates; after Max linear iterations the step
-       * is solved by MUMPS instead, and counted (statistics: direct fallbacks). So is a step
-       * whose approximation is singular and cannot be factorized.
+       * is solved by the `direct` solver instead, and counted (statistics: direct fallbacks).
+       * So is a step whose approximation is singular and cannot be factorized. Later steps with
+       * the same face rows go to the direct solver at once, which reuses its factors.
        */
       template <int dim>
       class DistributedIterativeSolver : public DistributedContactLinearSolver<dim>
@@ -46,10 +46,10 @@ namespace porofrac
                                    ConditionalOStream                     &progress,
                                    TimerOutput                            &timer)
             : system(system)
-            , max_iterations(parameters.max_linear_iterations)
+            , parameters(parameters)
             , jacobian(system, DistributedJacobian<dim>::Storage::face_rows)
-            , fallback("contact mechanics (direct fallback)")
             , progress(progress)
+            , timer(timer)
         {
           TimerOutput::Scope t(timer, "Mechanics: AMG and multiplier block setup");
           preconditioner =
@@ -66,49 +66,55 @@ namespace porofrac
 
         void
         solve(const FaceRows<dim> &rows,
-              const unsigned int,
-              const VectorType &rhs,
-              VectorType       &x) override
+              const unsigned int   n_changed_faces,
+              const VectorType    &rhs,
+              VectorType          &x) override
         {
           Timer clock;
           if (!ready || !same_owned_rows(system, rows, current_rows))
             {
               jacobian.assemble(rows);
               set_up_preconditioner(rows);
-              current_rows = rows;
-              ready        = true;
+              current_rows  = rows;
+              ready         = true;
+              gmres_stalled = false;
               ++this->stats.factorizations;
               this->stats.time_factorization += clock.wall_time();
               clock.restart();
             }
-          SolverControl           control(max_iterations, tolerance * rhs.l2_norm(), false, false);
-          SolverGMRES<VectorType> gmres(control,
-                                        typename SolverGMRES<VectorType>::AdditionalData(102,
-                                                                                         true));
           x = 0;
           if (!preconditioner_usable)
             solve_directly(rows,
+                           n_changed_faces,
                            rhs,
                            x,
                            "the preconditioner's Schur complement approximation is singular");
+          else if (gmres_stalled)
+            solve_directly(
+              rows, n_changed_faces, rhs, x, "GMRES did not converge with these face rows before");
           else
-            try
-              {
-                gmres.solve(jacobian, x, rhs, *preconditioner);
-              }
-            catch (const SolverControl::NoConvergence &)
-              {
-                std::ostringstream reason;
-                reason << "GMRES did not reach " << tolerance << " in " << max_iterations
-                       << " iterations";
-                solve_directly(rows, rhs, x, reason.str());
-              }
-          this->stats.linear_iterations += control.last_step();
+            solve_by_gmres(rows, n_changed_faces, rhs, x);
           this->stats.direct_workspace_retries =
-            fallback.workspace_retries() + preconditioner->workspace_retries();
+            (fallback ? fallback->statistics().direct_workspace_retries : 0) +
+            preconditioner->workspace_retries();
           this->stats.time_solves += clock.wall_time();
         }
 
+        void
+        reset() override
+        {
+          ready = false;
+          if (fallback)
+            fallback->reset();
+        }
+
+        std::string
+        name() const override
+        {
+          return "iterative";
+        }
+
+      private:
         /// The preconditioner for @p rows; where its Schur complement approximation S~ is
         /// singular (multipliers that load no displacement and whose face rows leave them free,
         /// doc/algorithms.md §2.1), the steps with these rows are solved by MUMPS instead.
@@ -127,52 +133,81 @@ namespace porofrac
             }
         }
 
-        /// The step by MUMPS on the whole Jacobian, counted as a direct fallback; @p reason
-        /// goes to the progress output.
+        void
+        solve_by_gmres(const FaceRows<dim> &rows,
+                       const unsigned int   n_changed_faces,
+                       const VectorType    &rhs,
+                       VectorType          &x)
+        {
+          SolverControl           control(parameters.max_linear_iterations,
+                                tolerance * rhs.l2_norm(),
+                                false,
+                                false);
+          SolverGMRES<VectorType> gmres(control,
+                                        typename SolverGMRES<VectorType>::AdditionalData(102,
+                                                                                         true));
+          try
+            {
+              gmres.solve(jacobian, x, rhs, *preconditioner);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              gmres_stalled = true;
+              std::ostringstream reason;
+              reason << "GMRES did not reach " << tolerance << " in "
+                     << parameters.max_linear_iterations << " iterations";
+              x = 0;
+              solve_directly(rows, n_changed_faces, rhs, x, reason.str());
+            }
+          this->stats.linear_iterations += control.last_step();
+        }
+
+        /// The step by the `direct` solver (MUMPS on the whole Jacobian, its factors kept while
+        /// the face rows do not change), counted as a direct fallback; @p reason goes to the
+        /// progress output.
         void
         solve_directly(const FaceRows<dim> &rows,
+                       const unsigned int   n_changed_faces,
                        const VectorType    &rhs,
                        VectorType          &x,
                        const std::string   &reason)
         {
-          if (!whole_jacobian)
-            whole_jacobian = std::make_unique<DistributedJacobian<dim>>(
-              system, DistributedJacobian<dim>::Storage::whole_matrix);
-          whole_jacobian->assemble(rows);
-          fallback.factorize(whole_jacobian->matrix());
-          fallback.solve(x, rhs);
+          if (!fallback)
+            fallback = DistributedContactLinearSolverRegistry<dim>::instance().create(
+              "direct", "Mechanics/Distributed linear solver", system, parameters, progress, timer);
+          const ContactLinearSolverStatistics before = fallback->statistics();
+          fallback->solve(rows, n_changed_faces, rhs, x);
+          const ContactLinearSolverStatistics &after = fallback->statistics();
           ++this->stats.direct_fallbacks;
-          std::ostringstream memory;
-          memory << std::fixed << std::setprecision(1) << fallback.estimated_memory_mb() / 1024.;
-          progress << "    " << reason << "; MUMPS solved this step (estimated memory "
-                   << memory.str() << " GB)" << std::endl;
+          this->stats.fallback_factorizations    = after.factorizations;
+          this->stats.reused_factorizations      = after.reused_factorizations;
+          this->stats.estimated_direct_memory_mb = after.estimated_direct_memory_mb;
+          std::ostringstream how;
+          if (after.factorizations > before.factorizations)
+            how << "factorized, estimated memory " << std::fixed << std::setprecision(1)
+                << after.estimated_direct_memory_mb / 1024. << " GB";
+          else if (after.reused_factorizations > before.reused_factorizations)
+            how << "GMRES preconditioned by its last factors";
+          else
+            how << "its last factors";
+          progress << "    " << reason << "; MUMPS solved this step (" << how.str() << ")"
+                   << std::endl;
         }
 
-        void
-        reset() override
-        {
-          ready = false;
-        }
-
-        std::string
-        name() const override
-        {
-          return "iterative";
-        }
-
-      private:
-        const DistributedElasticitySystem<dim> &system;
-        const unsigned int                      max_iterations;
-        double                                  tolerance = 1e-8;
-        DistributedJacobian<dim>                jacobian;
-        /// The Jacobian as one matrix, for MUMPS: made on the first fallback.
-        std::unique_ptr<DistributedJacobian<dim>>        whole_jacobian;
-        MumpsFactorization                               fallback;
+        const DistributedElasticitySystem<dim>          &system;
+        const ContactParameters                          parameters;
+        double                                           tolerance = 1e-8;
+        DistributedJacobian<dim>                         jacobian;
         ConditionalOStream                              &progress;
+        TimerOutput                                     &timer;
         std::unique_ptr<ContactBlockPreconditioner<dim>> preconditioner;
-        bool                                             ready                 = false;
-        bool                                             preconditioner_usable = false;
-        FaceRows<dim>                                    current_rows;
+        /// The `direct` solver, made on the first fallback.
+        std::unique_ptr<DistributedContactLinearSolver<dim>> fallback;
+        bool                                                 ready                 = false;
+        bool                                                 preconditioner_usable = false;
+        /// GMRES failed with the current face rows: their later steps go to the fallback.
+        bool          gmres_stalled = false;
+        FaceRows<dim> current_rows;
       };
 
       const std::string description =
@@ -182,7 +217,8 @@ namespace porofrac
         "diag(K), factorized by MUMPS; doc/parallel.md), to the relative residual "
         "min(Linear solver tolerance, Linear solver forcing x the contact residual); a step "
         "whose GMRES does not converge in Max linear iterations, or whose Schur complement "
-        "approximation is singular, is solved by MUMPS.";
+        "approximation is singular, is solved by the direct solver (as are later steps with the "
+        "same face rows, which reuse its factors).";
 
       template <int dim>
       std::unique_ptr<DistributedContactLinearSolver<dim>>

@@ -144,8 +144,8 @@ namespace porofrac
       }
       /// Over every contact solve so far (the initial one included): factorizations, Krylov
       /// iterations, Krylov solves replaced by a direct one, MUMPS factorizations repeated with
-      /// a larger workspace.
-      const std::array<unsigned int, 4> &
+      /// a larger workspace, factorizations of those direct solves.
+      const std::array<unsigned int, 5> &
       contact_linear_totals() const
       {
         return linear_totals;
@@ -205,7 +205,7 @@ namespace porofrac
       TimerOutput                                     &timer;
       const MPI_Comm                                   communicator;
       mechanics::DistributedContactProblem<dim> *const distributed;
-      std::array<unsigned int, 4>                      linear_totals{{0, 0, 0, 0}};
+      std::array<unsigned int, 5>                      linear_totals{{0, 0, 0, 0, 0}};
       const unsigned int                               n_matrix, n_fracture;
 
       double         dt = 0;

@@ -29,10 +29,15 @@ namespace porofrac
       /// Krylov iterations of iterative solvers, and their steps solved directly instead.
       unsigned int linear_iterations = 0;
       unsigned int direct_fallbacks  = 0;
+      /// Factorizations by the direct solver the Krylov solver fell back to (it reuses its
+      /// factors while the face rows do not change).
+      unsigned int fallback_factorizations = 0;
       /// MUMPS factorizations repeated with a larger workspace (MumpsFactorization).
       unsigned int direct_workspace_retries = 0;
-      double       time_factorization       = 0;
-      double       time_solves              = 0;
+      /// MUMPS's memory estimate for the last factorization (distributed direct solver), MB.
+      double estimated_direct_memory_mb = 0;
+      double time_factorization         = 0;
+      double time_solves                = 0;
       /// Set-up that depends on the mesh only (Cholesky of K and W for the Schur complement).
       double time_cholesky = 0, time_form_W = 0;
     };

@@ -48,9 +48,9 @@ namespace porofrac
       unsigned int        cycles_detected = 0;
       /// Factorizations of this solve, and solves done by GMRES on older factors.
       unsigned int factorizations = 0, reused_factorizations = 0;
-      /// Krylov iterations of an iterative linear solver over this solve, and its steps solved
-      /// directly because GMRES did not converge.
-      unsigned int linear_iterations = 0, direct_fallbacks = 0;
+      /// Krylov iterations of an iterative linear solver over this solve, its steps solved
+      /// directly because GMRES did not converge, and the factorizations these took.
+      unsigned int linear_iterations = 0, direct_fallbacks = 0, fallback_factorizations = 0;
       /// MUMPS factorizations of this solve repeated with a larger workspace.
       unsigned int direct_workspace_retries = 0;
       /// Time in computing the face rows, factorizing, triangular solves, and residual and
