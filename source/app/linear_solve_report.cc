@@ -33,7 +33,7 @@ namespace porofrac
       if (result.solver == "AMG-CG")
         context.report << result.iterations << " iterations, ";
       if (!result.converged)
-        context.report << "failed" << std::endl;
+        context.report << "failed (" << result.failure << ")" << std::endl;
       else
         {
           std::ostringstream text;
@@ -43,9 +43,11 @@ namespace porofrac
         }
       context.progress << "    one linear elasticity solve: " << result.set_up_time << " s set-up, "
                        << result.solve_time << " s solve" << std::endl;
-      io::Json &m                     = context.summary["mechanics"];
-      m["linear_solve_solver"]        = result.solver;
-      m["linear_solve_converged"]     = result.converged;
+      io::Json &m                 = context.summary["mechanics"];
+      m["linear_solve_solver"]    = result.solver;
+      m["linear_solve_converged"] = result.converged;
+      if (!result.converged)
+        m["linear_solve_failure"] = result.failure;
       m["linear_solve_iterations"]    = result.iterations;
       m["linear_solve_set_up_time_s"] = result.set_up_time;
       m["linear_solve_time_s"]        = time;

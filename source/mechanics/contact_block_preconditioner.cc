@@ -100,7 +100,9 @@ namespace porofrac
             });
         }
       schur.compress(VectorOperation::add);
-      schur_lu.factorize(schur);
+      // Without fracture faces the preconditioner is the AMG alone (MUMPS refuses n = 0).
+      if (schur.m() > 0)
+        schur_lu.factorize(schur);
     }
 
 
@@ -110,7 +112,8 @@ namespace porofrac
     ContactBlockPreconditioner<dim>::vmult(VectorType &dst, const VectorType &src) const
     {
       split(src, r_u, r_lambda);
-      schur_lu.solve(y_lambda, r_lambda);
+      if (schur.m() > 0)
+        schur_lu.solve(y_lambda, r_lambda);
       system.get_free_coupling_transpose().vmult(y_u, y_lambda);
       r_u -= y_u;
       amg.vmult(y_u, r_u);

@@ -82,7 +82,10 @@ namespace porofrac
       {
         DynamicSparsityPattern dsp(rows.size(), columns.size(), writable_rows);
         add(dsp);
-        SparsityTools::distribute_sparsity_pattern(dsp, rows, communicator, writable_rows);
+        // No rows (a mesh without fracture faces has no multipliers): nothing to send, and
+        // deal.II's index-owner dictionary divides by the index space's size.
+        if (rows.size() > 0)
+          SparsityTools::distribute_sparsity_pattern(dsp, rows, communicator, writable_rows);
         matrix.reinit(rows, columns, dsp, communicator);
       }
     } // namespace

@@ -10,6 +10,7 @@
 #include <porofrac/mechanics/linear_elasticity_solve.h>
 
 #include <memory>
+#include <sstream>
 
 namespace porofrac
 {
@@ -45,7 +46,11 @@ namespace porofrac
           }
         catch (const SolverControl::NoConvergence &)
           {
+            std::ostringstream failure;
+            failure << "CG did not reach " << parameters.linear_tolerance << " in "
+                    << parameters.max_linear_iterations << " iterations";
             result.converged = false;
+            result.failure   = failure.str();
             delta            = 0;
           }
         result.solve_time = clock.wall_time();
@@ -69,9 +74,10 @@ namespace porofrac
             clock.restart();
             lu.solve(delta, rhs);
           }
-        catch (const SolverFailure &)
+        catch (const SolverFailure &failure)
           {
             result.converged = false;
+            result.failure   = failure.what();
             delta            = 0;
           }
         result.solve_time = clock.wall_time();

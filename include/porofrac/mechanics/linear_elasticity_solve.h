@@ -22,8 +22,10 @@ namespace porofrac
       double set_up_time = 0, solve_time = 0;
       /// CG iterations (0 for MUMPS).
       unsigned int iterations = 0;
-      /// False if CG did not reach the tolerance in Max linear iterations, or MUMPS failed.
-      bool converged = true;
+      /// False if CG did not reach the tolerance in Max linear iterations, or MUMPS failed;
+      /// then @p failure says which.
+      bool        converged = true;
+      std::string failure;
       /// The displacement (owned dofs); the Dirichlet values where CG did not converge.
       dealii::TrilinosWrappers::MPI::Vector displacement;
     };
