@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/mpi.h>
 
+#include <porofrac/base/available_memory.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mumps_factorization.h>
 #include <porofrac/base/quiet_standard_error.h>
@@ -19,22 +20,6 @@ namespace porofrac
 {
   namespace
   {
-    /// MemAvailable of /proc/meminfo in MB; 0 where it cannot be read (no check then).
-    double
-    available_memory_mb()
-    {
-      std::ifstream meminfo("/proc/meminfo");
-      std::string   key;
-      double        kilobytes = 0;
-      while (meminfo >> key >> kilobytes)
-        {
-          if (key == "MemAvailable:")
-            return kilobytes / 1024.;
-          meminfo.ignore(256, '\n');
-        }
-      return 0;
-    }
-
     /// @p megabytes as "12.3 GB" or, below a GB, "456 MB".
     std::string
     memory_size(const double megabytes)
@@ -115,10 +100,11 @@ namespace porofrac
     const double worst_limit     = dealii::Utilities::MPI::max(short_of_memory ? limit : 0., comm);
     if (worst_need > 0)
       {
-        throw SolverFailure(what + ": MUMPS would need an estimated " + memory_size(worst_need) +
-                            " for its factorization, more than the " + memory_size(worst_limit) +
-                            " this machine has available; use more machines, a coarser mesh or "
-                            "an iterative linear solver");
+        throw SolverFailure(
+          what + ": MUMPS would need an estimated " + memory_size(worst_need) +
+          " for its factorization, more than the " + memory_size(worst_limit) +
+          " available to this run on this machine; use more machines, a coarser mesh or "
+          "an iterative linear solver");
       }
   }
 
@@ -163,6 +149,13 @@ namespace porofrac
   MumpsFactorization::factorize(const dealii::TrilinosWrappers::SparseMatrix &matrix)
   {
     done = false;
+    // MUMPS refuses n = 0; an empty system has nothing to factorize, and solve() nothing to do.
+    empty = matrix.m() == 0;
+    if (empty)
+      {
+        done = true;
+        return;
+      }
     for (unsigned int attempt = 0;; ++attempt)
       {
         if (analysed != &matrix.trilinos_matrix())
@@ -187,6 +180,8 @@ namespace porofrac
   MumpsFactorization::solve(dealii::TrilinosWrappers::MPI::Vector       &x,
                             const dealii::TrilinosWrappers::MPI::Vector &b) const
   {
+    if (empty)
+      return;
     problem->SetLHS(&x.trilinos_vector());
     problem->SetRHS(const_cast<Epetra_MultiVector *>(
       static_cast<const Epetra_MultiVector *>(&b.trilinos_vector())));

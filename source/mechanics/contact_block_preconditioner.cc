@@ -100,9 +100,7 @@ namespace porofrac
             });
         }
       schur.compress(VectorOperation::add);
-      // Without fracture faces the preconditioner is the AMG alone (MUMPS refuses n = 0).
-      if (schur.m() > 0)
-        schur_lu.factorize(schur);
+      schur_lu.factorize(schur);
     }
 
 
@@ -112,8 +110,7 @@ namespace porofrac
     ContactBlockPreconditioner<dim>::vmult(VectorType &dst, const VectorType &src) const
     {
       split(src, r_u, r_lambda);
-      if (schur.m() > 0)
-        schur_lu.solve(y_lambda, r_lambda);
+      schur_lu.solve(y_lambda, r_lambda);
       system.get_free_coupling_transpose().vmult(y_u, y_lambda);
       r_u -= y_u;
       amg.vmult(y_u, r_u);

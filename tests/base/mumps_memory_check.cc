@@ -2,7 +2,8 @@
 // MumpsFactorization's memory check: a tridiagonal matrix (3, -1; n = 20000) factorizes and solves
 // within the machine's available memory (residual printed), and the same matrix with a memory limit
 // below MUMPS's estimate throws SolverFailure after the analysis, before the factorization, naming
-// the factorization; the object then still works with the limit lifted. The estimate is kept.
+// the factorization; the object then still works with the limit lifted. The estimate is kept. An
+// empty matrix (n = 0, which MUMPS itself refuses) factorizes and solves as a no-op.
 #include <deal.II/base/mpi.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -73,4 +74,14 @@ main(int argc, char **argv)
   limited.set_memory_limit(0);
   std::cout << "limit lifted: relative residual below 1e-10: "
             << (solve_and_residual(limited, A, rows) < 1e-10 ? "yes" : "no") << std::endl;
+
+  const IndexSet                 none(0);
+  TrilinosWrappers::SparseMatrix empty;
+  empty.reinit(none, none, DynamicSparsityPattern(0, 0), MPI_COMM_WORLD);
+  TrilinosWrappers::MPI::Vector x(none, MPI_COMM_WORLD), b(x);
+  porofrac::MumpsFactorization  nothing("test factorization");
+  nothing.factorize(empty);
+  nothing.solve(x, b);
+  std::cout << "empty matrix: factorized: " << (nothing.factorized() ? "yes" : "no")
+            << ", solution size " << x.size() << std::endl;
 }

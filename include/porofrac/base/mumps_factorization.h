@@ -23,8 +23,11 @@ namespace porofrac
    *
    * After each analysis, MUMPS's estimate of the factorization's memory (INFO(15) of every
    * process, summed over the processes of each machine) is compared with the memory the machine
-   * has available (MemAvailable of /proc/meminfo, or set_memory_limit()): a factorization that
+   * has available (available_memory_mb(), or set_memory_limit()): a factorization that
    * would not fit throws SolverFailure before it starts, instead of exhausting the machine.
+   *
+   * An empty matrix (n = 0, which MUMPS refuses) is accepted: factorize() and solve() do
+   * nothing.
    *
    * A factorization that runs out of MUMPS's workspace (INFOG(1) = -8, -9, -14, -15, -17 or
    * -20: more pivoting than the analysis foresaw, typically on new values of the analysed
@@ -107,8 +110,10 @@ namespace porofrac
     std::unique_ptr<Epetra_LinearProblem> problem;
     std::unique_ptr<Amesos_BaseSolver>    solver;
     /// The Epetra matrix of the symbolic analysis (deal.II may replace it on a deep copy).
-    const void  *analysed             = nullptr;
-    bool         done                 = false;
+    const void *analysed = nullptr;
+    bool        done     = false;
+    /// The last factorized matrix has no rows.
+    bool         empty                = false;
     double       memory_limit_mb      = 0;
     double       estimate_mb          = 0;
     int          workspace_relaxation = 20;

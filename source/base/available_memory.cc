@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/base/available_memory.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace porofrac
+{
+  namespace
+  {
+    /// The first number in the file @p path; 0 where it cannot be read (also "max", cgroup v2's
+    /// "no limit").
+    double
+    number_in_file(const std::string &path)
+    {
+      std::ifstream file(path);
+      double        value = 0;
+      return (file >> value) ? value : 0.;
+    }
+
+    /// The value of @p key in a file of "key value" lines, 0 where it is absent.
+    double
+    keyed_value(const std::string &path, const std::string &key)
+    {
+      std::ifstream file(path);
+      std::string   name;
+      double        value = 0;
+      while (file >> name >> value)
+        {
+          if (name == key)
+            return value;
+          file.ignore(256, '\n');
+        }
+      return 0;
+    }
+
+    /// The headroom (MB) of the group in directory @p dir, 0 without a limit.
+    double
+    group_headroom_mb(const std::string &dir, const bool v2)
+    {
+      const double limit = number_in_file(dir + (v2 ? "/memory.max" : "/memory.limit_in_bytes"));
+      // v1 writes "no limit" as a number near 2^63.
+      if (limit <= 0 || limit >= 1e18)
+        return 0;
+      const double usage =
+        number_in_file(dir + (v2 ? "/memory.current" : "/memory.usage_in_bytes"));
+      const double cache =
+        keyed_value(dir + "/memory.stat", v2 ? "inactive_file" : "total_inactive_file");
+      return std::max(limit - std::max(usage - cache, 0.), 1.) / (1024. * 1024.);
+    }
+
+    /// The group path of the memory controller in /proc/self/cgroup: the "0::" line of cgroup
+    /// v2, or the v1 line whose controller list has "memory"; empty if there is none.
+    std::string
+    memory_group(const bool v2)
+    {
+      std::ifstream file("/proc/self/cgroup");
+      std::string   line;
+      while (std::getline(file, line))
+        {
+          const auto first = line.find(':'), second = line.find(':', first + 1);
+          if (first == std::string::npos || second == std::string::npos)
+            continue;
+          const std::string  controllers = line.substr(first + 1, second - first - 1);
+          std::istringstream list(controllers);
+          std::string        name;
+          bool               memory = v2 && controllers.empty();
+          while (!v2 && std::getline(list, name, ','))
+            memory = memory || name == "memory";
+          if (memory)
+            return line.substr(second + 1);
+        }
+      return "";
+    }
+  } // namespace
+
+
+
+  namespace internal
+  {
+    double
+    cgroup_headroom_mb(const std::string &mount, const std::string &group, const bool v2)
+    {
+      // Without a cgroup namespace the path names the groups above the container's too, which
+      // the mount does not show: start at the longest tail of the path that it shows.
+      std::string path = group;
+      while (!path.empty() && !std::ifstream(mount + path + "/memory.stat"))
+        {
+          const auto next = path.find('/', 1);
+          path            = next == std::string::npos ? "" : path.substr(next);
+        }
+      double headroom = 0;
+      while (true)
+        {
+          if (std::ifstream(mount + path + (v2 ? "/memory.max" : "/memory.limit_in_bytes")))
+            {
+              const double here = group_headroom_mb(mount + path, v2);
+              if (here > 0)
+                headroom = headroom > 0 ? std::min(headroom, here) : here;
+            }
+          if (path.empty() || path == "/")
+            break;
+          path = path.substr(0, path.find_last_of('/'));
+        }
+      return headroom;
+    }
+  } // namespace internal
+
+
+
+  double
+  available_memory_mb()
+  {
+    const double machine = keyed_value("/proc/meminfo", "MemAvailable:") / 1024.;
+    const bool   v2      = static_cast<bool>(std::ifstream("/sys/fs/cgroup/cgroup.controllers"));
+    const double group =
+      internal::cgroup_headroom_mb(v2 ? "/sys/fs/cgroup" : "/sys/fs/cgroup/memory",
+                                   memory_group(v2),
+                                   v2);
+    if (machine > 0 && group > 0)
+      return std::min(machine, group);
+    return std::max(machine, group);
+  }
+} // namespace porofrac
