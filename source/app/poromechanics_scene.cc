@@ -186,14 +186,17 @@ namespace porofrac
                  std::ostream                        &report)
       {
         const coupling::EnergyTerms &stored = energy.last_stored_energy();
+        // Plane strain: per metre of the out-of-plane direction.
+        const char *joules =
+          dim == 2 && !pm.mechanics.get_parameters().axisymmetric ? " J/m" : " J";
         report_states(report, pm.mechanics, "final time");
         report << "Coupling: " << stepper.step_number() << " time steps, " << totals.cuts
                << " time-step cuts, final time " << std::scientific << std::setprecision(4)
                << stepper.time() << " s" << std::endl
                << "Coupling: final mean fracture width " << pm.mean_fracture_width() << " m"
                << std::endl
-               << "Coupling: final stored energy (19): elastic " << stored.elastic << " J, total "
-               << stored.total() << " J" << std::defaultfloat << std::endl
+               << "Coupling: final stored energy (19): elastic " << stored.elastic << joules
+               << ", total " << stored.total() << joules << std::defaultfloat << std::endl
                << "Coupling: iterations: coupling " << totals.coupling << ", map evaluations "
                << totals.maps << ", flow Newton " << totals.flow << ", mechanics "
                << totals.mechanics << std::endl;
