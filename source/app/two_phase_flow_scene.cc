@@ -431,7 +431,7 @@ namespace porofrac
 
         const auto balances =
           flow::boundary_balances(mesh, solver, model.matrix_flux, axisymmetric);
-        flow::report_boundary_balances(balances, context.report);
+        flow::report_boundary_balances(balances, dim == 2 && !axisymmetric, context.report);
         summary["boundary_fluxes"] = flow::to_json(balances);
         // Rank 0 writes them; a file that cannot be written stops every process.
         collectively(context.communicator, [&]() {

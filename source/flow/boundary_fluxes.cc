@@ -113,6 +113,7 @@ namespace porofrac
 
     void
     report_boundary_balances(const std::map<types::boundary_id, BoundaryBalance> &balances,
+                             const bool                                           plane,
                              std::ostream                                        &report)
     {
       double largest = 0;
@@ -126,7 +127,8 @@ namespace porofrac
       for (const auto &[id, b] : balances)
         report << "Flow: boundary " << id << ": outflow of w " << std::scientific
                << std::setprecision(4) << shown(b.outflow[0]) << ", of nw " << shown(b.outflow[1])
-               << " m^3/s; mean p_w " << b.mean_pressure_w << " Pa" << std::endl;
+               << (plane ? " m^2/s" : " m^3/s") << "; mean p_w " << b.mean_pressure_w << " Pa"
+               << std::endl;
       report.flags(flags);
     }
 

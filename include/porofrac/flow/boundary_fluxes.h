@@ -44,9 +44,11 @@ namespace porofrac
     io::Json
     to_json(const std::map<types::boundary_id, BoundaryBalance> &balances);
 
-    /// One report line per id (4 digits; outflows below 1e-12 of the largest printed as 0).
+    /// One report line per id (4 digits; outflows below 1e-12 of the largest printed as 0), in
+    /// m^3/s, or in m^2/s (per metre out of the plane) if @p plane (2D, not axisymmetric).
     void
     report_boundary_balances(const std::map<types::boundary_id, BoundaryBalance> &balances,
+                             bool                                                 plane,
                              std::ostream                                        &report);
   } // namespace flow
 } // namespace porofrac
