@@ -144,7 +144,8 @@ namespace porofrac
                           Patterns::Anything(),
                           "Prescribed fluxes into the matrix through boundary faces: 'id: q_w = "
                           "v, q_nw = v; ...', volume of phase per face area and second (m/s), "
-                          "or 'id: Q_w = v, Q_nw = v', the total rate through the id (m^3/s) "
+                          "or 'id: Q_w = v, Q_nw = v', the total rate through the id (m^3/s; in 2D "
+                          "plane runs m^2/s, per metre out of the plane) "
                           "spread over its faces in proportion to their area (exact totals where "
                           "the faces only approximate a region); positive into the domain, a "
                           "missing phase 0. An id may not also carry a Dirichlet condition.");
