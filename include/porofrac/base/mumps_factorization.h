@@ -110,10 +110,9 @@ namespace porofrac
     std::unique_ptr<Epetra_LinearProblem> problem;
     std::unique_ptr<Amesos_BaseSolver>    solver;
     /// The Epetra matrix of the symbolic analysis (deal.II may replace it on a deep copy).
-    const void *analysed = nullptr;
-    bool        done     = false;
-    /// The last factorized matrix has no rows.
-    bool         empty                = false;
+    const void  *analysed             = nullptr;
+    bool         done                 = false;
+    bool         empty                = false; ///< the last factorized matrix has no rows
     double       memory_limit_mb      = 0;
     double       estimate_mb          = 0;
     int          workspace_relaxation = 20;
