@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace porofrac
@@ -121,5 +122,18 @@ namespace porofrac
     if (machine > 0 && group > 0)
       return std::min(machine, group);
     return std::max(machine, group);
+  }
+
+
+
+  std::string
+  memory_size_text(const double megabytes)
+  {
+    std::ostringstream text;
+    if (megabytes >= 1024)
+      text << std::fixed << std::setprecision(1) << megabytes / 1024. << " GB";
+    else
+      text << std::fixed << std::setprecision(megabytes < 1 ? 3 : 0) << megabytes << " MB";
+    return text.str();
   }
 } // namespace porofrac

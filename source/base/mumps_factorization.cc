@@ -20,18 +20,6 @@ namespace porofrac
 {
   namespace
   {
-    /// @p megabytes as "12.3 GB" or, below a GB, "456 MB".
-    std::string
-    memory_size(const double megabytes)
-    {
-      std::ostringstream text;
-      if (megabytes >= 1024)
-        text << std::fixed << std::setprecision(1) << megabytes / 1024. << " GB";
-      else
-        text << std::fixed << std::setprecision(megabytes < 1 ? 3 : 0) << megabytes << " MB";
-      return text.str();
-    }
-
     /// The status of the Amesos call @p call, made without Amesos's report of MUMPS's error
     /// codes on std::cerr: it comes on every failed call, also for a factorization the
     /// workspace retry then repeats with success; check() reports a failure that stays.
@@ -100,9 +88,9 @@ namespace porofrac
     const double worst_limit     = dealii::Utilities::MPI::max(short_of_memory ? limit : 0., comm);
     if (worst_need > 0)
       {
-        throw SolverFailure(
-          what + ": MUMPS would need an estimated " + memory_size(worst_need) +
-          " for its factorization, more than the " + memory_size(worst_limit) +
+        throw InsufficientMemory(
+          what + ": MUMPS would need an estimated " + memory_size_text(worst_need) +
+          " for its factorization, more than the " + memory_size_text(worst_limit) +
           " available to this run on this machine; use more machines, a coarser mesh or "
           "an iterative linear solver");
       }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/timer.h>
 
+#include <porofrac/base/available_memory.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/multiplier_schur_complement.h>
 
@@ -30,6 +31,7 @@ namespace porofrac
           if (!constrained[e.dof])
             entries[f].push_back(e);
 
+      check_memory();
       Timer clock;
       K.factorize(base_matrix, n_u);
       time_cholesky = clock.wall_time();
@@ -402,6 +404,27 @@ namespace porofrac
       for (unsigned int i = 0; i < m; ++i)
         solution(n_u + i) = dl(i);
     }
+
+    template <int dim>
+    void
+    MultiplierSchurComplement<dim>::check_memory() const
+    {
+      // W, and during the contact iterations the reduced complement S with its column block W N:
+      // three dense matrices of order m = dim x faces at least (the SVD of a singular S adds two).
+      const double m         = dim * n_f;
+      const double need_mb   = 3. * 8. * m * m / (1024. * 1024.);
+      const double available = available_memory_mb();
+      if (available > 0 && need_mb > available)
+        throw InsufficientMemory(
+          "multiplier Schur complement: its dense matrices for " + std::to_string(dim * n_f) +
+          " multipliers would need at least " + memory_size_text(need_mb) + ", more than the " +
+          memory_size_text(available) +
+          " available to this run on this machine; use a coarser fracture mesh or the iterative "
+          "distributed solver (Distributed = always, Mechanics/Distributed linear solver = "
+          "iterative)");
+    }
+
+
 
     template class MultiplierSchurComplement<2>;
     template class MultiplierSchurComplement<3>;

@@ -106,6 +106,10 @@ namespace porofrac
           {
             return std::make_unique<SchurComplementSolver<dim>>(system, progress, timer);
           }
+        catch (const InsufficientMemory &)
+          {
+            throw;
+          }
         catch (const SolverFailure &e)
           {
             if (parameters.multiplier_stabilization > 0)

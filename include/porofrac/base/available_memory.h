@@ -16,6 +16,10 @@ namespace porofrac
   double
   available_memory_mb();
 
+  /// @p megabytes as "12.3 GB" or, below a GB, "456 MB".
+  std::string
+  memory_size_text(double megabytes);
+
   namespace internal
   {
     /**

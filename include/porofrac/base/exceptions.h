@@ -40,6 +40,20 @@ namespace porofrac
   };
 
   /**
+   * A solver that found, before allocating it, that its factorization or dense matrices would
+   * need more memory than the run has (available_memory_mb()): no other direct solver is tried
+   * in its place, as it would need at least as much.
+   */
+  class InsufficientMemory : public SolverFailure
+  {
+  public:
+    explicit InsufficientMemory(const std::string &what)
+        : SolverFailure(what)
+    {
+    }
+  };
+
+  /**
    * The run was asked to stop (SIGINT or SIGTERM, see base/interrupt.h). Time-dependent scenes
    * throw it between steps, after writing the last accepted state; main() writes summary.json
    * with status "interrupted".

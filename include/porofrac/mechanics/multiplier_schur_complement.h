@@ -89,6 +89,11 @@ namespace porofrac
       }
 
     private:
+      /// Throws SolverFailure, before any allocation, if the dense matrices (at least three of
+      /// order dim x faces) need more memory than this run has (available_memory_mb()).
+      void
+      check_memory() const;
+
       const unsigned int                      n_u, n_f;
       std::vector<std::vector<CouplingEntry>> entries; ///< unconstrained coupling entries
       std::vector<double>                     measures;
