@@ -10,6 +10,12 @@ namespace porofrac
 {
   namespace
   {
+    /// limit_available_memory(); 0: none.
+    double memory_cap_mb = 0;
+
+    /// ReplicatedSerialSolves::copies_per_machine().
+    unsigned int replicated_copies = 1;
+
     /// The first number in the file @p path; 0 where it cannot be read (also "max", cgroup v2's
     /// "no limit").
     double
@@ -119,9 +125,42 @@ namespace porofrac
       internal::cgroup_headroom_mb(v2 ? "/sys/fs/cgroup" : "/sys/fs/cgroup/memory",
                                    memory_group(v2),
                                    v2);
-    if (machine > 0 && group > 0)
-      return std::min(machine, group);
-    return std::max(machine, group);
+    double available =
+      (machine > 0 && group > 0) ? std::min(machine, group) : std::max(machine, group);
+    if (memory_cap_mb > 0)
+      available = available > 0 ? std::min(available, memory_cap_mb) : memory_cap_mb;
+    return available;
+  }
+
+
+
+  void
+  limit_available_memory(const double megabytes)
+  {
+    memory_cap_mb = megabytes;
+  }
+
+
+
+  ReplicatedSerialSolves::ReplicatedSerialSolves(const unsigned int copies_per_machine)
+      : previous(replicated_copies)
+  {
+    replicated_copies = std::max(copies_per_machine, 1u);
+  }
+
+
+
+  ReplicatedSerialSolves::~ReplicatedSerialSolves()
+  {
+    replicated_copies = previous;
+  }
+
+
+
+  unsigned int
+  ReplicatedSerialSolves::copies_per_machine()
+  {
+    return replicated_copies;
   }
 
 
@@ -133,7 +172,11 @@ namespace porofrac
     if (megabytes >= 1024)
       text << std::fixed << std::setprecision(1) << megabytes / 1024. << " GB";
     else
-      text << std::fixed << std::setprecision(megabytes < 1 ? 3 : 0) << megabytes << " MB";
+      text << std::fixed
+           << std::setprecision(megabytes < 1  ? 3 :
+                                megabytes < 10 ? 2 :
+                                                 0)
+           << megabytes << " MB";
     return text.str();
   }
 } // namespace porofrac

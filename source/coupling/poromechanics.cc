@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <porofrac/base/available_memory.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mpi_tools.h>
 #include <porofrac/coupling/closure.h>
@@ -28,6 +29,7 @@ namespace porofrac
         , timer(timer)
         , communicator(communicator)
         , distributed(distributed)
+        , contact_copies_per_machine(distributed ? 1 : processes_on_this_machine(communicator))
         , n_matrix(flow.grid->n_matrix_cells)
         , n_fracture(flow.grid->n_fracture_cells)
     {
@@ -101,6 +103,7 @@ namespace porofrac
           return;
         }
       // A contact failure on one process is thrown on all of them.
+      const ReplicatedSerialSolves replicated(contact_copies_per_machine);
       collectively(communicator, [&]() {
         mechanics.set_equivalent_pressures(p_matrix, p_fracture, parameters.biot_coefficient);
         // Warm start from the previous solve (paper 5.3: the previous time step's solution).

@@ -51,14 +51,22 @@ namespace porofrac
         return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
       }
 
-      /// Creates @p file exclusively with our process id; false if it exists.
+      /// This machine's name ("" if it has none).
+      std::string
+      host_name()
+      {
+        char name[256] = {};
+        return ::gethostname(name, sizeof(name) - 1) == 0 ? std::string(name) : std::string();
+      }
+
+      /// Creates @p file exclusively with our process id and machine; false if it exists.
       bool
       create_lock(const std::string &file)
       {
         const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
         if (fd < 0)
           return false;
-        const std::string pid = std::to_string(::getpid()) + "\n";
+        const std::string pid = std::to_string(::getpid()) + " " + host_name() + "\n";
         const bool        ok  = ::write(fd, pid.data(), pid.size()) == ssize_t(pid.size());
         ::close(fd);
         return ok;
@@ -84,8 +92,17 @@ namespace porofrac
                       parameter,
                       "cannot write into the output directory '" + path + "'");
           long          pid = 0;
+          std::string   host;
           std::ifstream in(file);
-          in >> pid;
+          in >> pid >> host;
+          // On a file system shared by several machines, whether the holder still runs can
+          // only be told on its own machine.
+          check_input(host.empty() || host == host_name(),
+                      parameter,
+                      "the output directory '" + path + "' is held by porofrac process " +
+                        std::to_string(pid) + " on the machine '" + host +
+                        "'; choose another directory, or remove '" + file +
+                        "' if that run has ended");
           check_input(!process_runs(pid) || pid == ::getpid(),
                       parameter,
                       "the output directory '" + path +

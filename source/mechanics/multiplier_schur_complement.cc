@@ -31,9 +31,11 @@ namespace porofrac
           if (!constrained[e.dof])
             entries[f].push_back(e);
 
-      check_memory();
+      // The dense matrices first, before the symbolic analysis of K takes its own memory, then
+      // with the factor that analysis sizes.
+      check_memory(0.);
       Timer clock;
-      K.factorize(base_matrix, n_u);
+      K.factorize(base_matrix, n_u, [this](const double factor_mb) { check_memory(factor_mb); });
       time_cholesky = clock.wall_time();
 
       // W = J K^{-1} B^T = G M with G = J K^{-1} J^T (M = face measures): the columns of J^T
@@ -407,21 +409,32 @@ namespace porofrac
 
     template <int dim>
     void
-    MultiplierSchurComplement<dim>::check_memory() const
+    MultiplierSchurComplement<dim>::check_memory(const double factor_mb) const
     {
       // W, and during the contact iterations the reduced complement S with its column block W N:
       // three dense matrices of order m = dim x faces at least (the SVD of a singular S adds two).
-      const double m         = dim * n_f;
-      const double need_mb   = 3. * 8. * m * m / (1024. * 1024.);
-      const double available = available_memory_mb();
-      if (available > 0 && need_mb > available)
-        throw InsufficientMemory(
-          "multiplier Schur complement: its dense matrices for " + std::to_string(dim * n_f) +
-          " multipliers would need at least " + memory_size_text(need_mb) + ", more than the " +
-          memory_size_text(available) +
-          " available to this run on this machine; use a coarser fracture mesh or the iterative "
-          "distributed solver (Distributed = always, Mechanics/Distributed linear solver = "
-          "iterative)");
+      const double       m         = dim * n_f;
+      const double       dense_mb  = 3. * 8. * m * m / (1024. * 1024.);
+      const unsigned int copies    = ReplicatedSerialSolves::copies_per_machine();
+      const double       need_mb   = copies * (factor_mb + dense_mb);
+      const double       available = available_memory_mb();
+      if (!(available > 0 && need_mb > available))
+        return;
+      const std::string parts =
+        factor_mb > 0 ? "the Cholesky factor of K (" + memory_size_text(factor_mb) +
+                          ") and the dense matrices for " + std::to_string(dim * n_f) +
+                          " multipliers (" + memory_size_text(dense_mb) + ")" :
+                        "the dense matrices for " + std::to_string(dim * n_f) + " multipliers";
+      const std::string sharing =
+        copies > 1 ? " for the " + std::to_string(copies) +
+                       " processes on this machine that each solve the contact problem" :
+                     "";
+      throw InsufficientMemory(
+        "multiplier Schur complement: " + parts + " would need at least " +
+        memory_size_text(need_mb) + sharing + ", more than the " + memory_size_text(available) +
+        " available to this run on this machine; use a coarser mesh or the iterative "
+        "distributed solver (Distributed = always, or Coupling/Distributed contact mechanics = "
+        "true, with Mechanics/Distributed linear solver = iterative)");
     }
 
 

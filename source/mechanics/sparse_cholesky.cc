@@ -27,6 +27,19 @@ namespace porofrac
 {
   namespace mechanics
   {
+    namespace
+    {
+      /// The numeric part of @p L after cholmod_analyze(): the supernodal values (xsize doubles)
+      /// and row indices (ssize), or the lnz nonzeros of a simplicial factor, in MB.
+      double
+      factor_megabytes(const cholmod_factor *L, const cholmod_common &common)
+      {
+        const double bytes =
+          L->is_super ? 8. * L->xsize + sizeof(int) * L->ssize : (8. + sizeof(int)) * common.lnz;
+        return bytes / (1024. * 1024.);
+      }
+    } // namespace
+
     struct SparseCholesky::Data
     {
       cholmod_common  common;
@@ -79,7 +92,9 @@ namespace porofrac
     }
 
     void
-    SparseCholesky::factorize(const SparseMatrix<double> &matrix, const unsigned int n_rows)
+    SparseCholesky::factorize(const SparseMatrix<double>        &matrix,
+                              const unsigned int                 n_rows,
+                              const std::function<void(double)> &check_memory)
     {
       n = n_rows;
       if (data->factor)
@@ -110,6 +125,18 @@ namespace porofrac
         }
       Ap[n]        = k;
       data->factor = cholmod_analyze(A, &data->common);
+      if (check_memory)
+        {
+          try
+            {
+              check_memory(factor_megabytes(data->factor, data->common));
+            }
+          catch (...)
+            {
+              cholmod_free_sparse(&A, &data->common);
+              throw;
+            }
+        }
       cholmod_factorize(A, data->factor, &data->common);
       const int status = data->common.status;
       cholmod_free_sparse(&A, &data->common);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // io::OutputDirectory: a directory held by a running process (its lock names process 1, which
-// always runs) is refused with an InputError; a stale lock (a process id that does not run) is
-// taken over; the files of a previous run are removed and other files are kept (a
-// line_<name>.csv only when it begins with porofrac's sample-line header); the lock is
+// always runs) is refused with an InputError; a stale lock (a process id that does not run on
+// this machine, with or without the machine's name) is taken over; a lock of another machine is
+// refused, naming the lock file to remove; the files of a previous run are removed and other files
+// are kept (a line_<name>.csv only when it begins with porofrac's sample-line header); the lock is
 // released when the holder ends; a path under a regular file cannot be created.
 #include <porofrac/base/exceptions.h>
 #include <porofrac/io/output_directory.h>
@@ -11,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -43,8 +46,7 @@ namespace
     catch (const porofrac::InputError &e)
       {
         std::string what = e.what();
-        const auto  p    = what.find(dir.string());
-        if (p != std::string::npos)
+        for (auto p = what.find(dir.string()); p != std::string::npos; p = what.find(dir.string()))
           what.replace(p, dir.string().size(), "DIR");
         std::cout << title << ": " << what << std::endl;
       }
@@ -86,8 +88,19 @@ main()
   attempt("held by process 1", dir);
   std::cout << "  files kept: " << std::distance(fs::directory_iterator(dir), {}) << std::endl;
 
+  touch(dir / ".porofrac.lock", "1 other-machine.invalid\n");
+  attempt("held on another machine", dir);
+
+  char host[256] = {};
+  ::gethostname(host, sizeof(host) - 1);
+  touch(dir / ".porofrac.lock", std::to_string(dead_pid()) + " " + host + "\n");
+  attempt("stale lock of this machine", dir);
+  std::cout << "  lock released: " << (fs::exists(dir / ".porofrac.lock") ? "no" : "yes")
+            << std::endl;
+
+  touch(dir / "summary.json");
   touch(dir / ".porofrac.lock", std::to_string(dead_pid()) + "\n");
-  attempt("stale lock", dir);
+  attempt("stale lock without a machine name", dir);
   std::cout << "  lock released: " << (fs::exists(dir / ".porofrac.lock") ? "no" : "yes")
             << std::endl;
   for (const char *name : {"notes.txt",

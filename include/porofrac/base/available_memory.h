@@ -16,7 +16,37 @@ namespace porofrac
   double
   available_memory_mb();
 
-  /// @p megabytes as "12.3 GB" or, below a GB, "456 MB".
+  /**
+   * Caps available_memory_mb() at @p megabytes (0: no cap), for this process, e.g. to exercise
+   * the memory checks of the solvers in a test without a control group.
+   */
+  void
+  limit_available_memory(double megabytes);
+
+  /**
+   * A serial solver that every process of a run holds and factorizes at the same time (the
+   * coupled model's replicated contact mechanics) allocates its matrices once per process: its
+   * memory check must count them that many times against the machine's memory. While an object
+   * of this class lives, copies_per_machine() is the number it was given (the processes of the
+   * run on this machine, processes_on_this_machine()); otherwise 1.
+   */
+  class ReplicatedSerialSolves
+  {
+  public:
+    explicit ReplicatedSerialSolves(unsigned int copies_per_machine);
+    ~ReplicatedSerialSolves();
+    ReplicatedSerialSolves(const ReplicatedSerialSolves &) = delete;
+    ReplicatedSerialSolves &
+    operator=(const ReplicatedSerialSolves &) = delete;
+
+    static unsigned int
+    copies_per_machine();
+
+  private:
+    const unsigned int previous;
+  };
+
+  /// @p megabytes as "12.3 GB" or, below a GB, "456 MB" (below 10 MB "4.56 MB").
   std::string
   memory_size_text(double megabytes);
 

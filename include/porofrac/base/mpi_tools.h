@@ -82,6 +82,20 @@ namespace porofrac
           throw std::runtime_error(message);
       }
   }
+
+  /// The number of processes of @p communicator on this machine, which share its memory
+  /// (collective).
+  inline unsigned int
+  processes_on_this_machine(const MPI_Comm communicator)
+  {
+    if (communicator == MPI_COMM_SELF)
+      return 1;
+    MPI_Comm machine;
+    MPI_Comm_split_type(communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
+    const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(machine);
+    MPI_Comm_free(&machine);
+    return n;
+  }
 } // namespace porofrac
 
 #endif

@@ -205,8 +205,11 @@ namespace porofrac
       TimerOutput                                     &timer;
       const MPI_Comm                                   communicator;
       mechanics::DistributedContactProblem<dim> *const distributed;
-      std::array<unsigned int, 5>                      linear_totals{{0, 0, 0, 0, 0}};
-      const unsigned int                               n_matrix, n_fracture;
+      /// Processes on this machine that each solve the serial contact problem (1 if it is
+      /// distributed): its memory checks count that many copies.
+      const unsigned int          contact_copies_per_machine;
+      std::array<unsigned int, 5> linear_totals{{0, 0, 0, 0, 0}};
+      const unsigned int          n_matrix, n_fracture;
 
       double         dt = 0;
       Vector<double> p_E;     ///< current (matrix cells, then fracture faces)

@@ -20,12 +20,13 @@ namespace porofrac
      * The output directory of one run, held for the run's lifetime. Taking it creates the
      * directory if needed, checks that it can be written, takes the lock file `.porofrac.lock`
      * (refusing a directory that a running porofrac process holds; a lock left by a process that
-     * no longer runs is taken over) and removes the files a previous run left there under the
-     * names porofrac writes (summary.json, history.csv, fractures.csv, fracture_p2.csv, mesh*,
-     * fractures.*, displacement.* and its pieces displacement_NNNN.*, flow*, poromechanics*,
-     * checkpoint.bin) and the sample lines line_<name>.csv that begin with
-     * sample_line_header(), so that the directory never mixes the outputs of two runs. Other
-     * files are left alone. The destructor releases the lock.
+     * no longer runs on this machine is taken over; a lock of another machine, which may share
+     * the file system, is refused with the file to remove if that run has ended) and removes the
+     * files a previous run left there under the names porofrac writes (summary.json, history.csv,
+     * fractures.csv, fracture_p2.csv, mesh*, fractures.*, displacement.* and its pieces
+     * displacement_NNNN.*, flow*, poromechanics*, checkpoint.bin) and the sample lines
+     * line_<name>.csv that begin with sample_line_header(), so that the directory never mixes the
+     * outputs of two runs. Other files are left alone. The destructor releases the lock.
      */
     class OutputDirectory
     {

@@ -89,10 +89,14 @@ namespace porofrac
       }
 
     private:
-      /// Throws SolverFailure, before any allocation, if the dense matrices (at least three of
-      /// order dim x faces) need more memory than this run has (available_memory_mb()).
+      /**
+       * Throws InsufficientMemory, before the numeric factorization of K, if its Cholesky factor
+       * (@p factor_mb, 0 before its symbolic analysis) and the dense matrices (at least three of
+       * order dim x faces) need more memory than this run has (available_memory_mb()), counted once
+       * per process that holds a copy (ReplicatedSerialSolves).
+       */
       void
-      check_memory() const;
+      check_memory(double factor_mb) const;
 
       const unsigned int                      n_u, n_f;
       std::vector<std::vector<CouplingEntry>> entries; ///< unconstrained coupling entries

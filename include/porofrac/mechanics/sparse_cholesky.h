@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <vector>
 
 namespace porofrac
@@ -32,9 +33,16 @@ namespace porofrac
       SparseCholesky &
       operator=(const SparseCholesky &) = delete;
 
-      /// Factorizes rows and columns [0, n) of @p matrix (only its upper triangle is read).
+      /**
+       * Factorizes rows and columns [0, n) of @p matrix (only its upper triangle is read).
+       * Between the symbolic analysis and the numeric factorization, @p check_memory (if given)
+       * receives the size in MB of the factor about to be allocated, and may throw to stop
+       * before it is.
+       */
       void
-      factorize(const SparseMatrix<double> &matrix, const unsigned int n);
+      factorize(const SparseMatrix<double>        &matrix,
+                const unsigned int                 n,
+                const std::function<void(double)> &check_memory = {});
 
       /// x = K^{-1} x.
       void
