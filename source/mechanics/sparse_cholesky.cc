@@ -38,6 +38,27 @@ namespace porofrac
           L->is_super ? 8. * L->xsize + sizeof(int) * L->ssize : (8. + sizeof(int)) * common.lnz;
         return bytes / (1024. * 1024.);
       }
+
+      /// Throws for a CHOLMOD call that could not allocate its result: out of memory, or a
+      /// factor with more entries than CHOLMOD's 32-bit indices address. Neither is a
+      /// singular block, so no other direct solver is tried in its place.
+      void
+      check_allocated(const void *result, const cholmod_common &common, const std::string &what)
+      {
+        if (result && common.status >= CHOLMOD_OK)
+          return;
+        const std::string reason =
+          common.status == CHOLMOD_TOO_LARGE ?
+            "its factor would have more entries than CHOLMOD's 32-bit indices address" :
+          common.status == CHOLMOD_OUT_OF_MEMORY ?
+            "out of memory" :
+            "CHOLMOD status " + std::to_string(common.status);
+        throw InsufficientMemory("Cholesky factorization of the elasticity block: " + what +
+                                 " failed (" + reason +
+                                 "); use a coarser mesh or the iterative distributed solver "
+                                 "(Distributed = always, Mechanics/Distributed linear solver = "
+                                 "iterative)");
+      }
     } // namespace
 
     struct SparseCholesky::Data
@@ -108,6 +129,7 @@ namespace porofrac
             ++nnz;
       cholmod_sparse *A = cholmod_allocate_sparse(
         n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL, &data->common);
+      check_allocated(A, data->common, "copying the matrix");
       int        *Ap = static_cast<int *>(A->p);
       int        *Ai = static_cast<int *>(A->i);
       double     *Ax = static_cast<double *>(A->x);
@@ -125,21 +147,26 @@ namespace porofrac
         }
       Ap[n]        = k;
       data->factor = cholmod_analyze(A, &data->common);
-      if (check_memory)
+      try
         {
-          try
-            {
-              check_memory(factor_megabytes(data->factor, data->common));
-            }
-          catch (...)
-            {
-              cholmod_free_sparse(&A, &data->common);
-              throw;
-            }
+          check_allocated(data->factor,
+                          data->common,
+                          "the symbolic analysis of " + std::to_string(n) + " rows");
+          if (check_memory)
+            check_memory(factor_megabytes(data->factor, data->common));
+        }
+      catch (...)
+        {
+          cholmod_free_sparse(&A, &data->common);
+          if (data->factor)
+            cholmod_free_factor(&data->factor, &data->common);
+          throw;
         }
       cholmod_factorize(A, data->factor, &data->common);
       const int status = data->common.status;
       cholmod_free_sparse(&A, &data->common);
+      if (status == CHOLMOD_OUT_OF_MEMORY || status == CHOLMOD_TOO_LARGE)
+        check_allocated(nullptr, data->common, "the numeric factorization");
       // A rigid-body mode makes the block singular; in floating point its last pivot may come
       // out tiny and positive instead of failing, so also reject a negligible reciprocal
       // condition estimate ((min_i L_ii / max_i L_ii)^2).
