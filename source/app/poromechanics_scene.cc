@@ -286,6 +286,13 @@ namespace porofrac
         save(io::CheckpointWriter &w) const;
         void
         load(io::CheckpointReader &r);
+        /// The parameters the postprocessors see: with the distributed contact problem the
+        /// serial copy has no K, so their linear elasticity solve is left to it.
+        PhysicsParameters
+        postprocessing_parameters(const PhysicsParameters &physics) const
+        {
+          return distributed_mech ? without_serial_linear_solve(physics) : physics;
+        }
 
         io::RunContext                    &context;
         const coupling::CouplingParameters parameters;
@@ -350,7 +357,7 @@ namespace porofrac
         // With the distributed contact problem the serial one only holds its state: no K,
         // unless a postprocessor solves with it (Iteration table).
         const bool state_only = distributed_mech && !postprocessors_need_system_matrices<dim>(
-                                                      without_serial_linear_solve(physics));
+                                                      postprocessing_parameters(physics));
         mech.setup(state_only ? mechanics::SystemAssembly::loads :
                                 mechanics::SystemAssembly::matrices);
         if (distributed_mech)
@@ -531,9 +538,8 @@ namespace porofrac
         // A distributed contact problem times its own linear solve; the serial copy has no K.
         if (distributed_mech && physics.mechanics.reports.linear_solve_time)
           report_linear_elasticity_solve(*distributed_mech, context);
-        const PhysicsParameters postprocessing =
-          distributed_mech ? without_serial_linear_solve(physics) : physics;
-        SceneView<dim> scene{mesh, postprocessing};
+        const PhysicsParameters postprocessing = postprocessing_parameters(physics);
+        SceneView<dim>          scene{mesh, postprocessing};
         scene.mechanics     = &mech;
         scene.flow          = &flow;
         scene.poromechanics = &pm;

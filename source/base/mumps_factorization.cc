@@ -3,6 +3,7 @@
 
 #include <porofrac/base/available_memory.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/mpi_tools.h>
 #include <porofrac/base/mumps_factorization.h>
 #include <porofrac/base/quiet_standard_error.h>
 
@@ -76,12 +77,9 @@ namespace porofrac
     const auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get());
     // INFO(15): this process's estimate, in MB, of MUMPS's in-core factorization.
     const double process_need = mumps ? const_cast<Amesos_Mumps *>(mumps)->GetINFO()[14] : 0.;
-    MPI_Comm     machine;
-    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
-    const double need = dealii::Utilities::MPI::sum(process_need, machine);
-    MPI_Comm_free(&machine);
-    estimate_mb        = dealii::Utilities::MPI::max(need, comm);
-    const double limit = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
+    const double need         = sum_on_this_machine(process_need, comm);
+    estimate_mb               = dealii::Utilities::MPI::max(need, comm);
+    const double limit        = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
     // A need above its machine's limit, and that limit, agreed by every process.
     const bool   short_of_memory = limit > 0 && need > limit;
     const double worst_need      = dealii::Utilities::MPI::max(short_of_memory ? need : 0., comm);

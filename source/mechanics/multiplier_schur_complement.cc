@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace porofrac
 {
@@ -32,10 +34,12 @@ namespace porofrac
             entries[f].push_back(e);
 
       // The dense matrices first, before the symbolic analysis of K takes its own memory, then
-      // with the factor that analysis sizes.
-      check_memory(0.);
+      // with the factor that analysis sizes, then with Y (below).
+      check_memory(0., 0.);
       Timer clock;
-      K.factorize(base_matrix, n_u, [this](const double factor_mb) { check_memory(factor_mb); });
+      K.factorize(base_matrix, n_u, [this](const double factor_mb) {
+        check_memory(factor_mb, 0.);
+      });
       time_cholesky = clock.wall_time();
 
       // W = J K^{-1} B^T = G M with G = J K^{-1} J^T (M = face measures): the columns of J^T
@@ -62,7 +66,10 @@ namespace porofrac
           b.resize(w);
         }
       FullMatrix<double> G;
-      reach_entries = K.inverse_gram(columns, G);
+      // The factor is held by now (the run's available memory no longer includes it): Y = L^{-1}
+      // P J^T, which the elimination tree sizes before it is allocated, and the dense matrices.
+      reach_entries =
+        K.inverse_gram(columns, G, [this](const double solves_mb) { check_memory(0., solves_mb); });
       W.reinit(m, m);
       for (unsigned int i = 0; i < m; ++i)
         for (unsigned int j = 0; j < m; ++j)
@@ -409,28 +416,36 @@ namespace porofrac
 
     template <int dim>
     void
-    MultiplierSchurComplement<dim>::check_memory(const double factor_mb) const
+    MultiplierSchurComplement<dim>::check_memory(const double factor_mb,
+                                                 const double solves_mb) const
     {
       // W, and during the contact iterations the reduced complement S with its column block W N:
-      // three dense matrices of order m = dim x faces at least (the SVD of a singular S adds two).
+      // three dense matrices of order m = dim x faces at least (the SVD of a singular S adds two;
+      // while W is formed, G and its accumulator take the place of S and W N).
       const double       m         = dim * n_f;
       const double       dense_mb  = 3. * 8. * m * m / (1024. * 1024.);
       const unsigned int copies    = ReplicatedSerialSolves::copies_per_machine();
-      const double       need_mb   = copies * (factor_mb + dense_mb);
+      const double       need_mb   = copies * (factor_mb + solves_mb + dense_mb);
       const double       available = available_memory_mb();
       if (!(available > 0 && need_mb > available))
         return;
-      const std::string parts =
-        factor_mb > 0 ? "the Cholesky factor of K (" + memory_size_text(factor_mb) +
-                          ") and the dense matrices for " + std::to_string(dim * n_f) +
-                          " multipliers (" + memory_size_text(dense_mb) + ")" :
-                        "the dense matrices for " + std::to_string(dim * n_f) + " multipliers";
+      std::vector<std::string> parts;
+      if (factor_mb > 0)
+        parts.push_back("the Cholesky factor of K (" + memory_size_text(factor_mb) + ")");
+      if (solves_mb > 0)
+        parts.push_back("the solves of its factor with the " + std::to_string(dim * n_f) +
+                        " multiplier columns (" + memory_size_text(solves_mb) + ")");
+      parts.push_back("the dense matrices for " + std::to_string(dim * n_f) + " multipliers" +
+                      (parts.empty() ? "" : " (" + memory_size_text(dense_mb) + ")"));
+      std::string listed = parts[0];
+      for (unsigned int i = 1; i < parts.size(); ++i)
+        listed += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
       const std::string sharing =
         copies > 1 ? " for the " + std::to_string(copies) +
                        " processes on this machine that each solve the contact problem" :
                      "";
       throw InsufficientMemory(
-        "multiplier Schur complement: " + parts + " would need at least " +
+        "multiplier Schur complement: " + listed + " would need at least " +
         memory_size_text(need_mb) + sharing + ", more than the " + memory_size_text(available) +
         " available to this run on this machine; use a coarser mesh or the iterative "
         "distributed solver (Distributed = always, or Coupling/Distributed contact mechanics = "

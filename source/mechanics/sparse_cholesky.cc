@@ -29,18 +29,22 @@ namespace porofrac
   {
     namespace
     {
-      /// The numeric part of @p L after cholmod_analyze(): the supernodal values (xsize doubles)
+      /// CHOLMOD's 64-bit index type (its cholmod_l_* interface): factors of 3D P2 elasticity
+      /// outgrow 32-bit indices (about 2e9 entries) before the memory of a large node.
+      using Index = SuiteSparse_long;
+
+      /// The numeric part of @p L after cholmod_l_analyze(): the supernodal values (xsize doubles)
       /// and row indices (ssize), or the lnz nonzeros of a simplicial factor, in MB.
       double
       factor_megabytes(const cholmod_factor *L, const cholmod_common &common)
       {
-        const double bytes =
-          L->is_super ? 8. * L->xsize + sizeof(int) * L->ssize : (8. + sizeof(int)) * common.lnz;
+        const double bytes = L->is_super ? 8. * L->xsize + sizeof(Index) * L->ssize :
+                                           (8. + sizeof(Index)) * common.lnz;
         return bytes / (1024. * 1024.);
       }
 
       /// Throws for a CHOLMOD call that could not allocate its result: out of memory, or a
-      /// factor with more entries than CHOLMOD's 32-bit indices address. Neither is a
+      /// factor with more entries than CHOLMOD's indices address. Neither is a
       /// singular block, so no other direct solver is tried in its place.
       void
       check_allocated(const void *result, const cholmod_common &common, const std::string &what)
@@ -49,7 +53,7 @@ namespace porofrac
           return;
         const std::string reason =
           common.status == CHOLMOD_TOO_LARGE ?
-            "its factor would have more entries than CHOLMOD's 32-bit indices address" :
+            "its factor would have more entries than CHOLMOD's indices address" :
           common.status == CHOLMOD_OUT_OF_MEMORY ?
             "out of memory" :
             "CHOLMOD status " + std::to_string(common.status);
@@ -89,16 +93,16 @@ namespace porofrac
         B.z              = nullptr;
         B.xtype          = CHOLMOD_REAL;
         B.dtype          = CHOLMOD_DOUBLE;
-        cholmod_dense *X = cholmod_solve(system, factor, &B, &common);
+        cholmod_dense *X = cholmod_l_solve(system, factor, &B, &common);
         std::memcpy(x, X->x, sizeof(double) * B.nzmax);
-        cholmod_free_dense(&X, &common);
+        cholmod_l_free_dense(&X, &common);
       }
     };
 
     SparseCholesky::SparseCholesky()
         : data(new Data)
     {
-      cholmod_start(&data->common);
+      cholmod_l_start(&data->common);
       data->common.print = 0;
       // Supernodal LL^T (level-3 BLAS in factorization and block solves).
       data->common.supernodal = CHOLMOD_SUPERNODAL;
@@ -107,8 +111,8 @@ namespace porofrac
     SparseCholesky::~SparseCholesky()
     {
       if (data->factor)
-        cholmod_free_factor(&data->factor, &data->common);
-      cholmod_finish(&data->common);
+        cholmod_l_free_factor(&data->factor, &data->common);
+      cholmod_l_finish(&data->common);
       delete data;
     }
 
@@ -119,7 +123,7 @@ namespace porofrac
     {
       n = n_rows;
       if (data->factor)
-        cholmod_free_factor(&data->factor, &data->common);
+        cholmod_l_free_factor(&data->factor, &data->common);
       // Row i of the (symmetric) CSR matrix is column i of the CSC matrix; keep the entries
       // with row index <= column index (stype = 1: upper triangle).
       std::size_t nnz = 0;
@@ -127,11 +131,11 @@ namespace porofrac
         for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
           if (it->column() <= i)
             ++nnz;
-      cholmod_sparse *A = cholmod_allocate_sparse(
+      cholmod_sparse *A = cholmod_l_allocate_sparse(
         n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL, &data->common);
       check_allocated(A, data->common, "copying the matrix");
-      int        *Ap = static_cast<int *>(A->p);
-      int        *Ai = static_cast<int *>(A->i);
+      Index      *Ap = static_cast<Index *>(A->p);
+      Index      *Ai = static_cast<Index *>(A->i);
       double     *Ax = static_cast<double *>(A->x);
       std::size_t k  = 0;
       for (unsigned int i = 0; i < n; ++i)
@@ -146,7 +150,7 @@ namespace porofrac
               }
         }
       Ap[n]        = k;
-      data->factor = cholmod_analyze(A, &data->common);
+      data->factor = cholmod_l_analyze(A, &data->common);
       try
         {
           check_allocated(data->factor,
@@ -157,21 +161,21 @@ namespace porofrac
         }
       catch (...)
         {
-          cholmod_free_sparse(&A, &data->common);
+          cholmod_l_free_sparse(&A, &data->common);
           if (data->factor)
-            cholmod_free_factor(&data->factor, &data->common);
+            cholmod_l_free_factor(&data->factor, &data->common);
           throw;
         }
-      cholmod_factorize(A, data->factor, &data->common);
+      cholmod_l_factorize(A, data->factor, &data->common);
       const int status = data->common.status;
-      cholmod_free_sparse(&A, &data->common);
+      cholmod_l_free_sparse(&A, &data->common);
       if (status == CHOLMOD_OUT_OF_MEMORY || status == CHOLMOD_TOO_LARGE)
         check_allocated(nullptr, data->common, "the numeric factorization");
       // A rigid-body mode makes the block singular; in floating point its last pivot may come
       // out tiny and positive instead of failing, so also reject a negligible reciprocal
       // condition estimate ((min_i L_ii / max_i L_ii)^2).
       const double rcond = (status == CHOLMOD_OK && data->factor->minor >= n) ?
-                             cholmod_rcond(data->factor, &data->common) :
+                             cholmod_l_rcond(data->factor, &data->common) :
                              0.;
       if (status != CHOLMOD_OK || data->factor->minor < n || !(rcond > 1e-14))
         {
@@ -254,18 +258,19 @@ namespace porofrac
     std::size_t
     SparseCholesky::inverse_gram(
       const std::vector<std::vector<std::pair<unsigned int, double>>> &columns,
-      FullMatrix<double>                                              &G) const
+      FullMatrix<double>                                              &G,
+      const std::function<void(double)>                               &check_memory) const
     {
       const cholmod_factor *L = data->factor;
       data->Y.clear();
       Assert(L && L->is_super && L->is_ll, ExcInternalError());
       const int          nsuper = L->nsuper;
-      const int         *super  = static_cast<const int *>(L->super);
-      const int         *pi     = static_cast<const int *>(L->pi);
-      const int         *px     = static_cast<const int *>(L->px);
-      const int         *Ls     = static_cast<const int *>(L->s);
+      const Index       *super  = static_cast<const Index *>(L->super);
+      const Index       *pi     = static_cast<const Index *>(L->pi);
+      const Index       *px     = static_cast<const Index *>(L->px);
+      const Index       *Ls     = static_cast<const Index *>(L->s);
       const double      *Lx     = static_cast<const double *>(L->x);
-      const int         *perm   = static_cast<const int *>(L->Perm);
+      const Index       *perm   = static_cast<const Index *>(L->Perm);
       const unsigned int m      = columns.size();
 
       // Supernode of each (permuted) column of L, and the supernodal elimination tree: the
@@ -299,6 +304,13 @@ namespace porofrac
                     reaching[s].push_back(k);
               }
       }
+      if (check_memory)
+        {
+          double y_entries = 0;
+          for (int s = 0; s < nsuper; ++s)
+            y_entries += double(super[s + 1] - super[s]) * reaching[s].size();
+          check_memory(8. * y_entries / (1024. * 1024.));
+        }
       const auto position = [&](const int s, const unsigned int k) {
         return std::lower_bound(reaching[s].begin(), reaching[s].end(), k) - reaching[s].begin();
       };
@@ -362,7 +374,7 @@ namespace porofrac
                    &zero,
                    update.data(),
                    &nbelow);
-              const int *rows = Ls + pi[s] + ncol;
+              const Index *rows = Ls + pi[s] + ncol;
               for (types::blas_int i = 0; i < nbelow;)
                 {
                   const int t = supernode_of[rows[i]], t_columns = super[t + 1] - super[t];
@@ -386,7 +398,7 @@ namespace porofrac
             }
           // Supernode s is done: its column list and block move into the kept Y (only
           // descendants, all processed, read reaching[s]).
-          data->Y.push_back({super[s], int(ncol), std::move(reaching[s]), std::move(Y)});
+          data->Y.push_back({int(super[s]), int(ncol), std::move(reaching[s]), std::move(Y)});
         }
       G.reinit(m, m);
       for (unsigned int i = 0; i < m; ++i)

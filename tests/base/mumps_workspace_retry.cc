@@ -18,6 +18,8 @@
 
 #include <iostream>
 
+#include "../grid_pattern.h"
+
 using namespace dealii;
 
 namespace
@@ -58,20 +60,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   IndexSet                         rows(n * n);
   rows.add_range(0, n * n);
-  DynamicSparsityPattern dsp(n * n, n * n);
-  for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        dsp.add(index(i, j), index(i, j));
-        if (i > 0)
-          dsp.add(index(i, j), index(i - 1, j));
-        if (i + 1 < n)
-          dsp.add(index(i, j), index(i + 1, j));
-        if (j > 0)
-          dsp.add(index(i, j), index(i, j - 1));
-        if (j + 1 < n)
-          dsp.add(index(i, j), index(i, j + 1));
-      }
+  const DynamicSparsityPattern   dsp = five_point_pattern(n);
   TrilinosWrappers::SparseMatrix A;
   A.reinit(rows, rows, dsp, MPI_COMM_WORLD);
 

@@ -6,6 +6,7 @@
 
 #include <porofrac/base/exceptions.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -83,18 +84,25 @@ namespace porofrac
       }
   }
 
-  /// The number of processes of @p communicator on this machine, which share its memory
-  /// (collective).
+  /// The sum of @p value over the processes of @p communicator on this machine, which share its
+  /// memory (collective).
+  inline double
+  sum_on_this_machine(const double value, const MPI_Comm communicator)
+  {
+    if (communicator == MPI_COMM_SELF)
+      return value;
+    MPI_Comm machine;
+    MPI_Comm_split_type(communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
+    const double sum = dealii::Utilities::MPI::sum(value, machine);
+    MPI_Comm_free(&machine);
+    return sum;
+  }
+
+  /// The number of processes of @p communicator on this machine (collective).
   inline unsigned int
   processes_on_this_machine(const MPI_Comm communicator)
   {
-    if (communicator == MPI_COMM_SELF)
-      return 1;
-    MPI_Comm machine;
-    MPI_Comm_split_type(communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
-    const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(machine);
-    MPI_Comm_free(&machine);
-    return n;
+    return static_cast<unsigned int>(std::lround(sum_on_this_machine(1., communicator)));
   }
 } // namespace porofrac
 

@@ -90,13 +90,15 @@ namespace porofrac
 
     private:
       /**
-       * Throws InsufficientMemory, before the numeric factorization of K, if its Cholesky factor
-       * (@p factor_mb, 0 before its symbolic analysis) and the dense matrices (at least three of
-       * order dim x faces) need more memory than this run has (available_memory_mb()), counted once
-       * per process that holds a copy (ReplicatedSerialSolves).
+       * Throws InsufficientMemory if what is still to be allocated needs more memory than this
+       * run has (available_memory_mb()), counted once per process that holds a copy
+       * (ReplicatedSerialSolves): the dense matrices (at least three of order dim x faces), with
+       * the Cholesky factor of K (@p factor_mb, before its numeric factorization; 0 before its
+       * symbolic analysis and once it is held) and Y = L^{-1} P J^T (@p solves_mb, before W is
+       * formed; 0 before).
        */
       void
-      check_memory(double factor_mb) const;
+      check_memory(double factor_mb, double solves_mb) const;
 
       const unsigned int                      n_u, n_f;
       std::vector<std::vector<CouplingEntry>> entries; ///< unconstrained coupling entries

@@ -64,12 +64,15 @@ namespace porofrac
        * on a few rows only reaches the supernodes on their paths to the root of the elimination
        * tree, so the forward substitution runs supernode by supernode on the columns that reach
        * it (dense triangular solve and update, level-3 BLAS) and each supernode adds its rows of
-       * Y to G (rank-k update). Y is kept for gram_factor_*(). Returns the number of nonzeros
-       * of Y.
+       * Y to G (rank-k update). Y is kept for gram_factor_*(). Before Y is allocated,
+       * @p check_memory (if given) receives its size in MB, which the column reach of the
+       * elimination tree fixes, and may throw to stop first. Returns the number of nonzeros of
+       * Y.
        */
       std::size_t
       inverse_gram(const std::vector<std::vector<std::pair<unsigned int, double>>> &columns,
-                   FullMatrix<double>                                              &G) const;
+                   FullMatrix<double>                                              &G,
+                   const std::function<void(double)> &check_memory = {}) const;
       /// z = L^{-1} P z (forward half of a solve).
       void
       forward(std::vector<double> &z) const;
