@@ -8,6 +8,7 @@
 #include <porofrac/app/poromechanics_scene.h>
 #include <porofrac/app/simulator.h>
 #include <porofrac/app/two_phase_flow_scene.h>
+#include <porofrac/base/blas_info.h>
 #include <porofrac/base/config.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mpi_tools.h>
@@ -310,6 +311,7 @@ namespace porofrac
       summary["physics"]          = physics;
       summary["dim"]              = dim;
       summary["porofrac_version"] = version;
+      summary["blas"]             = blas_description();
       summary["n_mpi_ranks"]      = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       summary["distributed"]      = communicator != MPI_COMM_SELF;
       io::RunContext context{deck.filename().string(),
