@@ -23,6 +23,10 @@ namespace porofrac
           {
             lu.factorize(matrix);
           }
+        catch (const SolverFailure &)
+          {
+            throw;
+          }
         catch (const std::runtime_error &e)
           {
             throw SolverFailure(e.what());

@@ -315,6 +315,11 @@ namespace porofrac
                              std::to_string(result.iterations) + " iterations (relative residual " +
                              io::to_text(result.relative_residual) + ")";
         }
+      catch (const InsufficientMemory &)
+        {
+          // A shorter time step needs the same memory: the run stops.
+          throw;
+        }
       catch (const SolverFailure &e)
         {
           report.failure = e.what();

@@ -612,6 +612,11 @@ namespace porofrac
               linear_solver->solve(residual, update, tolerance);
             }
         }
+      catch (const InsufficientMemory &e)
+        {
+          // A shorter time step needs the same memory: the run stops.
+          throw InsufficientMemory("two-phase flow: " + std::string(e.what()));
+        }
       catch (const SolverFailure &e)
         {
           set_up_jacobian.clear();

@@ -490,6 +490,10 @@ namespace porofrac
             {
               solve_linear_system(rows, states, rhs, delta);
             }
+          catch (const InsufficientMemory &e)
+            {
+              throw InsufficientMemory(linear_failure_message(e.what()));
+            }
           catch (const SolverFailure &e)
             {
               throw SolverFailure(linear_failure_message(e.what()));

@@ -73,6 +73,11 @@ namespace porofrac
         {
           factorization->factorize(system_matrix);
         }
+      catch (const InsufficientMemory &e)
+        {
+          factorization.reset();
+          throw InsufficientMemory(std::string("contact mechanics: ") + e.what());
+        }
       catch (const std::exception &e)
         {
           factorization.reset();

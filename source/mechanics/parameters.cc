@@ -209,15 +209,18 @@ namespace porofrac
         "compliance K^-1 the exact Schur complement holds; gamma = 3 to 5 saved 20 to 40 % of "
         "the GMRES iterations on the penny and 3D network decks, but can change the path of "
         "inexact contact iterations (doc/benchmarks/penny.md). Must be positive.");
-      prm.declare_entry("Report linear solve time",
-                        "false",
-                        Patterns::Bool(),
-                        "Also time one linear elasticity solve (every fracture open) on the "
-                        "same mesh: serial runs by UMFPACK (factorization + solve), distributed "
-                        "runs by the counterpart of Distributed linear solver (iterative: CG "
-                        "with the same AMG to Linear solver tolerance; direct: MUMPS); written "
-                        "to summary.json (mechanics/linear_solve_time_s and, in contact mechanics "
-                        "scenes, contact_linear_ratio).");
+      prm.declare_entry(
+        "Report linear solve time",
+        "false",
+        Patterns::Bool(),
+        "Also time one linear elasticity solve (every fracture open) on the "
+        "same mesh: serial runs by UMFPACK (factorization + solve), distributed "
+        "runs by the counterpart of Distributed linear solver (iterative: CG "
+        "with the same AMG to Linear solver tolerance; direct: MUMPS); written "
+        "to summary.json (mechanics/linear_solve_time_s and, in contact mechanics "
+        "scenes, contact_linear_ratio); a reference that cannot be run (short of memory, or "
+        "K singular without the contact rows) is reported there instead "
+        "(mechanics/linear_solve_failure) and the run's results stand.");
       prm.declare_entry("Write P2 reconstruction",
                         "false",
                         Patterns::Bool(),

@@ -23,7 +23,13 @@ namespace porofrac
    * the default: on the paper's 5.3 mesh it factorizes the flow Jacobian about 20 % faster than
    * the automatic choice (doc/coupling.md).
    *
-   * factorize() throws std::runtime_error for a singular matrix or any UMFPACK error.
+   * factorize() throws std::runtime_error for a singular matrix or any UMFPACK error, and
+   * InsufficientMemory, before it factorizes, when a lower bound of the factorization's memory
+   * exceeds the memory the run has (available_memory_mb(), counted once per
+   * ReplicatedSerialSolves copy): on Linux an allocation beyond it would not fail but have the
+   * process killed. The bound is the values of the L and U nonzeros that UMFPACK's symmetric
+   * analysis counts (its own peak estimates are far above the peaks), so a factorization a
+   * little above the memory can still be killed; one far above it is refused.
    */
   class SparseLU
   {
@@ -55,9 +61,22 @@ namespace porofrac
       return factor_nonzeros;
     }
 
+    /// The lower bound (MB) of the numeric factorization's memory that the memory check uses,
+    /// from the last symbolic analysis; 0 before the first, and if UMFPACK did not use its
+    /// symmetric strategy (no bound, no check).
+    double
+    minimum_memory_estimate_mb() const
+    {
+      return minimum_memory_mb;
+    }
+
   private:
     void
     analyse(const dealii::SparseMatrix<double> &matrix);
+    /// Throws InsufficientMemory if the factorization of @p n rows would need more than the
+    /// available memory.
+    void
+    check_memory(std::size_t n) const;
     void
     free_numeric();
     void
@@ -73,7 +92,8 @@ namespace porofrac
     void                         *symbolic = nullptr;
     void                         *numeric  = nullptr;
     double                        control[UMFPACK_CONTROL];
-    double                        factor_nonzeros = 0;
+    double                        factor_nonzeros   = 0;
+    double                        minimum_memory_mb = 0;
   };
 } // namespace porofrac
 
