@@ -597,8 +597,8 @@ namespace porofrac
         t =
           std::make_unique<TimerOutput::Scope>(*timer,
                                                "Flow: linear solve (" + linear_solver_name() + ")");
-      // A singular or failed factorisation is a failed step (converged = false), never an
-      // exception: the caller cuts the time step.
+      // A singular or failed factorisation is a failed step (converged = false): the caller
+      // cuts the time step. Only a factorisation refused for lack of memory stops the run.
       const bool reuse = jacobian_unchanged();
       reused_setups += reuse;
       try
@@ -614,7 +614,7 @@ namespace porofrac
         }
       catch (const InsufficientMemory &e)
         {
-          // A shorter time step needs the same memory: the run stops.
+          // A shorter time step needs the same memory.
           throw InsufficientMemory("two-phase flow: " + std::string(e.what()));
         }
       catch (const SolverFailure &e)

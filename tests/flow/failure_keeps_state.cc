@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "../summary_json.h"
+
 namespace
 {
   std::vector<std::string>
@@ -30,18 +32,6 @@ namespace
     for (std::string l; std::getline(in, l);)
       result.push_back(l);
     return result;
-  }
-
-  /// The value of "key" in a flat JSON object (enough for summary.json's top-level strings).
-  std::string
-  json_string(const std::string &file, const std::string &key)
-  {
-    std::stringstream text;
-    text << std::ifstream(file).rdbuf();
-    const std::string s     = text.str();
-    const auto        k     = s.find("\"" + key + "\"");
-    const auto        begin = s.find('"', s.find(':', k) + 1) + 1;
-    return k == std::string::npos ? "(missing)" : s.substr(begin, s.find('"', begin) - begin);
   }
 } // namespace
 
@@ -74,8 +64,9 @@ main(int argc, char **argv)
     {
       std::cout << "SolverFailure: " << std::string(e.what()).substr(0, 50) << std::endl;
     }
-  std::cout << "summary status: " << json_string(dir + "/summary.json", "status") << std::endl;
-  const std::string reason = json_string(dir + "/summary.json", "reason");
+  std::cout << "summary status: " << porofrac_tests::json_string(dir + "/summary.json", "status")
+            << std::endl;
+  const std::string reason = porofrac_tests::json_string(dir + "/summary.json", "reason");
   std::cout << "summary reason names the last failure: "
             << (reason.find("last failure") != std::string::npos ? "yes" : "no") << std::endl;
   const auto history = lines(dir + "/history.csv");

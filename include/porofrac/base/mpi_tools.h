@@ -20,13 +20,15 @@ namespace porofrac
     input       = 1, ///< InputError
     solver      = 2, ///< SolverFailure
     interrupted = 3, ///< Interrupted
-    internal    = 4  ///< any other std::exception
+    internal    = 4, ///< any other std::exception
+    memory      = 5  ///< InsufficientMemory (a SolverFailure that no time-step cut helps)
   };
 
   /**
    * Runs @p work on every process of @p communicator. If it throws on any of them (an
-   * InputError, SolverFailure, Interrupted or another std::exception), every process throws
-   * the same exception, with the message of the lowest failing rank, after the vote. Work
+   * InputError, InsufficientMemory, SolverFailure, Interrupted or another std::exception),
+   * every process throws the same exception, with the message of the lowest failing rank,
+   * after the vote. Work
    * whose outcome may differ between processes (a point constraint seen by one process only,
    * a file only rank 0 writes, a postprocessor that runs on rank 0) goes through here, so that
    * no process is left waiting in a collective call while another one has left with an error.
@@ -44,6 +46,10 @@ namespace porofrac
     catch (const InputError &e)
       {
         failure = {int(FailureKind::input), e.parameter, e.reason};
+      }
+    catch (const InsufficientMemory &e)
+      {
+        failure = {int(FailureKind::memory), "", e.what()};
       }
     catch (const SolverFailure &e)
       {
@@ -77,6 +83,8 @@ namespace porofrac
           throw InputError(parameter, message);
         case FailureKind::solver:
           throw SolverFailure(message);
+        case FailureKind::memory:
+          throw InsufficientMemory(message);
         case FailureKind::interrupted:
           throw Interrupted(message);
         default:
