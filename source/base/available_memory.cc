@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/available_memory.h>
+#include <porofrac/base/exceptions.h>
 
 #include <algorithm>
 #include <fstream>
@@ -161,6 +162,28 @@ namespace porofrac
   ReplicatedSerialSolves::copies_per_machine()
   {
     return replicated_copies;
+  }
+
+
+
+  void
+  require_memory(const double       megabytes,
+                 const std::string &what,
+                 const std::string &each,
+                 const std::string &advice)
+  {
+    const unsigned int copies    = ReplicatedSerialSolves::copies_per_machine();
+    const double       need      = copies * megabytes;
+    const double       available = available_memory_mb();
+    if (!(available > 0 && need > available))
+      return;
+    throw InsufficientMemory(
+      what + " would need at least " + memory_size_text(need) +
+      (copies > 1 ?
+         " for the " + std::to_string(copies) + " processes on this machine that each " + each :
+         "") +
+      ", more than the " + memory_size_text(available) + " available to this run on this machine" +
+      (advice.empty() ? "" : "; " + advice));
   }
 
 

@@ -4,13 +4,17 @@
 #include <porofrac/base/sparse_lu.h>
 
 #include <algorithm>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 
 namespace porofrac
 {
   using namespace dealii;
+
+  namespace
+  {
+    const std::string advice = "use a coarser mesh or an iterative or distributed linear solver";
+  }
 
   SparseLU::SparseLU(const unsigned int refinement_steps, const bool symmetric)
   {
@@ -42,54 +46,101 @@ namespace porofrac
     symbolic = nullptr;
   }
 
+  namespace
+  {
+    /// Whether the stored entries of @p A's rows are in ascending column order, except a
+    /// diagonal stored first if @p diagonal_first (deal.II's layout for square matrices).
+    bool
+    rows_in_column_order(const SparseMatrix<double> &A, const bool diagonal_first)
+    {
+      for (std::size_t r = 0; r < A.m(); ++r)
+        {
+          auto e = A.begin(r);
+          if (diagonal_first && (e == A.end(r) || e->column() != r))
+            return false;
+          if (diagonal_first)
+            ++e;
+          bool        first    = true;
+          std::size_t previous = 0;
+          for (; e != A.end(r); ++e, first = false)
+            {
+              const std::size_t c = e->column();
+              if ((!first && c <= previous) || (diagonal_first && c == r))
+                return false;
+              previous = c;
+            }
+        }
+      return true;
+    }
+
+    /// out[start + j] = field(j-th entry of row @p r in column order), for rows that
+    /// rows_in_column_order() accepts: a diagonal stored first goes to its sorted slot.
+    template <typename Field, typename T>
+    void
+    copy_row(const SparseMatrix<double> &A,
+             const std::size_t           r,
+             const bool                  diagonal_first,
+             SuiteSparse_long            slot,
+             const Field                &field,
+             std::vector<T>             &out)
+    {
+      auto e = A.begin(r);
+      if (diagonal_first)
+        {
+          const T diagonal = field(*e);
+          for (++e; e != A.end(r) && e->column() < r; ++e)
+            out[slot++] = field(*e);
+          out[slot++] = diagonal;
+        }
+      for (; e != A.end(r); ++e)
+        out[slot++] = field(*e);
+    }
+  } // namespace
+
+
+
   void
   SparseLU::analyse(const SparseMatrix<double> &A)
   {
     free_numeric();
     free_symbolic();
-    const SparsityPattern &sp = A.get_sparsity_pattern();
-    const std::size_t      n  = A.m();
+    pattern               = nullptr;
+    const std::size_t n   = A.m();
+    const std::size_t nnz = A.get_sparsity_pattern().n_nonzero_elements();
+    diagonal_first        = A.m() == A.n();
+    // deal.II's layout (SparsityPattern): each row sorted by column, a square matrix's diagonal
+    // first; the copy relies on it to place the values without an index array.
+    if (!rows_in_column_order(A, diagonal_first))
+      throw std::runtime_error("SparseLU: the matrix rows are not in column order");
+    // The previous pattern's arrays go before the new ones are sized.
+    std::vector<SuiteSparse_long>().swap(row_start);
+    std::vector<SuiteSparse_long>().swap(columns);
+    std::vector<double>().swap(values);
+    check_analysis_memory(n, nnz);
     row_start.assign(n + 1, 0);
-    columns.clear();
-    position.clear();
-    columns.reserve(sp.n_nonzero_elements());
-    position.reserve(sp.n_nonzero_elements());
-    std::vector<std::pair<SuiteSparse_long, SuiteSparse_long>> row; // (column, stored index)
-    SuiteSparse_long                                           k = 0;
+    columns.resize(nnz);
     for (std::size_t r = 0; r < n; ++r)
       {
-        row.clear();
-        for (auto e = A.begin(r); e != A.end(r); ++e)
-          row.emplace_back(e->column(), k++);
-        std::sort(row.begin(), row.end());
-        for (const auto &[c, index] : row)
-          {
-            (void)index;
-            columns.push_back(c);
-          }
-        row_start[r + 1] = columns.size();
+        row_start[r + 1] = row_start[r] + (A.end(r) - A.begin(r));
+        copy_row(
+          A,
+          r,
+          diagonal_first,
+          row_start[r],
+          [](const auto &e) { return SuiteSparse_long(e.column()); },
+          columns);
       }
-    // position: stored index -> sorted slot.
-    position.assign(columns.size(), 0);
-    k = 0;
-    for (std::size_t r = 0; r < n; ++r)
-      {
-        row.clear();
-        for (auto e = A.begin(r); e != A.end(r); ++e)
-          row.emplace_back(e->column(), k++);
-        std::sort(row.begin(), row.end());
-        for (std::size_t j = 0; j < row.size(); ++j)
-          position[row[j].second] = row_start[r] + j;
-      }
-    values.assign(columns.size(), 0.);
     double    info[UMFPACK_INFO];
     const int status = umfpack_dl_symbolic(
       n, n, row_start.data(), columns.data(), nullptr, &symbolic, control, info);
+    if (status == UMFPACK_ERROR_out_of_memory)
+      throw InsufficientMemory("the UMFPACK analysis of " + std::to_string(n) +
+                               " rows ran out of memory; " + advice);
     if (status != UMFPACK_OK)
       throw std::runtime_error("UMFPACK symbolic analysis failed with status " +
                                std::to_string(status));
-    pattern      = &sp;
-    pattern_size = sp.n_nonzero_elements();
+    pattern      = &A.get_sparsity_pattern();
+    pattern_size = nnz;
     // UMFPACK's own peak estimates are upper bounds 5-28 times the peaks measured on our
     // matrices; the symmetric analysis's count of L + U nonzeros (AMD on A + A^T, diagonal
     // pivots) was 0.69-0.95 times the count factorized, so their values (8 bytes each) are a
@@ -99,24 +150,45 @@ namespace porofrac
                           0.;
   }
 
+
+
+  double
+  SparseLU::analysis_memory_estimate_mb(const std::size_t n, const std::size_t nnz)
+  {
+    // The copy of the pattern: row starts and columns, 8 bytes each (the values are copied after
+    // the analysis, whose peak they would raise). The symbolic analysis (the ordering of
+    // A + A^T: AMD, METIS) took 25-43 bytes per nonzero of the process's memory on our matrices
+    // (doc/mechanics.md); 20 are counted.
+    const double bytes = 8. * (n + 1) + (8. + 20.) * nnz;
+    return bytes / (1024. * 1024.);
+  }
+
+
+
+  void
+  SparseLU::check_analysis_memory(const std::size_t n, const std::size_t nnz) const
+  {
+    require_memory(analysis_memory_estimate_mb(n, nnz),
+                   "the UMFPACK analysis of " + std::to_string(n) + " rows and " +
+                     std::to_string(nnz) + " nonzeros (its copy of the pattern and the ordering)",
+                   "factorize it",
+                   advice);
+  }
+
+
+
   void
   SparseLU::check_memory(const std::size_t n) const
   {
-    const unsigned int copies    = ReplicatedSerialSolves::copies_per_machine();
-    const double       need      = copies * minimum_memory_mb;
-    const double       available = available_memory_mb();
-    if (!(available > 0 && need > available))
-      return;
-    throw InsufficientMemory(
-      "the UMFPACK LU factorization of " + std::to_string(n) + " rows would need at least " +
-      memory_size_text(need) + " for the values of its factors" +
-      (copies > 1 ? " for the " + std::to_string(copies) +
-                      " processes on this machine that each factorize it" :
-                    "") +
-      ", more than the " + memory_size_text(available) +
-      " available to this run on this machine; use a coarser mesh or an iterative or "
-      "distributed linear solver");
+    const double values_mb = values.empty() ? 8. * pattern_size / (1024. * 1024.) : 0.;
+    require_memory(minimum_memory_mb + values_mb,
+                   "the values of the L and U factors of the UMFPACK LU factorization of " +
+                     std::to_string(n) + " rows",
+                   "factorize it",
+                   advice);
   }
+
+
 
   void
   SparseLU::factorize(const SparseMatrix<double> &A)
@@ -124,12 +196,12 @@ namespace porofrac
     const SparsityPattern &sp = A.get_sparsity_pattern();
     if (pattern != &sp || pattern_size != sp.n_nonzero_elements() || row_start.size() != A.m() + 1)
       analyse(A);
-    SuiteSparse_long k = 0;
-    for (std::size_t r = 0; r < A.m(); ++r)
-      for (auto e = A.begin(r); e != A.end(r); ++e)
-        values[position[k++]] = e->value();
     free_numeric();
     check_memory(A.m());
+    values.resize(pattern_size);
+    for (std::size_t r = 0; r < A.m(); ++r)
+      copy_row(
+        A, r, diagonal_first, row_start[r], [](const auto &e) { return e.value(); }, values);
     double    info[UMFPACK_INFO];
     const int status = umfpack_dl_numeric(
       row_start.data(), columns.data(), values.data(), symbolic, &numeric, control, info);
@@ -138,8 +210,7 @@ namespace porofrac
       {
         free_numeric();
         throw InsufficientMemory("the UMFPACK LU factorization of " + std::to_string(A.m()) +
-                                 " rows ran out of memory; use a coarser mesh or an iterative "
-                                 "or distributed linear solver");
+                                 " rows ran out of memory; " + advice);
       }
     if (status != UMFPACK_OK)
       {
@@ -149,6 +220,8 @@ namespace porofrac
           (status == UMFPACK_WARNING_singular_matrix ? " (singular matrix)" : ""));
       }
   }
+
+
 
   void
   SparseLU::solve(Vector<double> &x) const

@@ -422,13 +422,8 @@ namespace porofrac
       // W, and during the contact iterations the reduced complement S with its column block W N:
       // three dense matrices of order m = dim x faces at least (the SVD of a singular S adds two;
       // while W is formed, G and its accumulator take the place of S and W N).
-      const double       m         = dim * n_f;
-      const double       dense_mb  = 3. * 8. * m * m / (1024. * 1024.);
-      const unsigned int copies    = ReplicatedSerialSolves::copies_per_machine();
-      const double       need_mb   = copies * (factor_mb + solves_mb + dense_mb);
-      const double       available = available_memory_mb();
-      if (!(available > 0 && need_mb > available))
-        return;
+      const double             m        = dim * n_f;
+      const double             dense_mb = 3. * 8. * m * m / (1024. * 1024.);
       std::vector<std::string> parts;
       if (factor_mb > 0)
         parts.push_back("the Cholesky factor of K (" + memory_size_text(factor_mb) + ")");
@@ -440,16 +435,12 @@ namespace porofrac
       std::string listed = parts[0];
       for (unsigned int i = 1; i < parts.size(); ++i)
         listed += (i + 1 == parts.size() ? " and " : ", ") + parts[i];
-      const std::string sharing =
-        copies > 1 ? " for the " + std::to_string(copies) +
-                       " processes on this machine that each solve the contact problem" :
-                     "";
-      throw InsufficientMemory(
-        "multiplier Schur complement: " + listed + " would need at least " +
-        memory_size_text(need_mb) + sharing + ", more than the " + memory_size_text(available) +
-        " available to this run on this machine; use a coarser mesh or the iterative "
-        "distributed solver (Distributed = always, or Coupling/Distributed contact mechanics = "
-        "true, with Mechanics/Distributed linear solver = iterative)");
+      require_memory(factor_mb + solves_mb + dense_mb,
+                     "multiplier Schur complement: " + listed,
+                     "solve the contact problem",
+                     "use a coarser mesh or the iterative distributed solver (Distributed = "
+                     "always, or Coupling/Distributed contact mechanics = true, with "
+                     "Mechanics/Distributed linear solver = iterative)");
     }
 
 

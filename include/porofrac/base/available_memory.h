@@ -46,6 +46,20 @@ namespace porofrac
     const unsigned int previous;
   };
 
+  /**
+   * Throws InsufficientMemory "<what> would need at least <need>[ for the N processes on this
+   * machine that each <each>], more than the <available> available to this run on this machine[;
+   * <advice>]" if @p megabytes, counted once per ReplicatedSerialSolves copy, exceed
+   * available_memory_mb(); nothing if the available memory cannot be read. Call it before the
+   * allocation it guards: on Linux an allocation beyond the memory does not fail but has the
+   * process killed.
+   */
+  void
+  require_memory(double             megabytes,
+                 const std::string &what,
+                 const std::string &each,
+                 const std::string &advice);
+
   /// @p megabytes as "12.3 GB" or, below a GB, "456 MB" (below 10 MB "4.56 MB").
   std::string
   memory_size_text(double megabytes);

@@ -24,12 +24,14 @@ namespace porofrac
    * the automatic choice (doc/coupling.md).
    *
    * factorize() throws std::runtime_error for a singular matrix or any UMFPACK error, and
-   * InsufficientMemory, before it factorizes, when a lower bound of the factorization's memory
-   * exceeds the memory the run has (available_memory_mb(), counted once per
-   * ReplicatedSerialSolves copy): on Linux an allocation beyond it would not fail but have the
-   * process killed. The bound is the values of the L and U nonzeros that UMFPACK's symmetric
-   * analysis counts (its own peak estimates are far above the peaks), so a factorization a
-   * little above the memory can still be killed; one far above it is refused.
+   * InsufficientMemory, before it allocates, when a lower bound of the memory of the analysis
+   * or of the factorization exceeds the memory the run has (available_memory_mb(), counted once
+   * per ReplicatedSerialSolves copy): on Linux an allocation beyond it would not fail but have
+   * the process killed. The analysis's bound is its copy of the pattern and less than the
+   * symbolic analysis was measured to take (analysis_memory_estimate_mb()); the
+   * factorization's, the values of the L and U nonzeros that UMFPACK's symmetric analysis counts
+   * (its own peak estimates are far above the peaks) and the copy of the matrix values. So a run
+   * a little above the memory can still be killed; one far above it is refused.
    */
   class SparseLU
   {
@@ -70,11 +72,21 @@ namespace porofrac
       return minimum_memory_mb;
     }
 
+    /// The memory (MB) that the analysis of a pattern of @p n rows and @p nnz nonzeros needs at
+    /// least and checks before it allocates: the copy of the pattern (row starts, columns) and
+    /// the symbolic analysis.
+    static double
+    analysis_memory_estimate_mb(std::size_t n, std::size_t nnz);
+
   private:
     void
     analyse(const dealii::SparseMatrix<double> &matrix);
-    /// Throws InsufficientMemory if the factorization of @p n rows would need more than the
-    /// available memory.
+    /// Throws InsufficientMemory if the analysis of a pattern of @p n rows and @p nnz nonzeros
+    /// would need more than the available memory.
+    void
+    check_analysis_memory(std::size_t n, std::size_t nnz) const;
+    /// Throws InsufficientMemory if the factorization of @p n rows (and the copy of the values,
+    /// the first time) would need more than the available memory.
     void
     check_memory(std::size_t n) const;
     void
@@ -87,13 +99,14 @@ namespace porofrac
     /// Row-compressed copy with sorted columns (UMFPACK's column form of the transpose).
     std::vector<SuiteSparse_long> row_start, columns;
     std::vector<double>           values;
-    /// values[position[k]] = k-th stored value of the SparseMatrix.
-    std::vector<SuiteSparse_long> position;
-    void                         *symbolic = nullptr;
-    void                         *numeric  = nullptr;
-    double                        control[UMFPACK_CONTROL];
-    double                        factor_nonzeros   = 0;
-    double                        minimum_memory_mb = 0;
+    /// Whether each stored row starts with the diagonal (deal.II's square matrices), which the
+    /// copy moves to its sorted slot.
+    bool   diagonal_first = false;
+    void  *symbolic       = nullptr;
+    void  *numeric        = nullptr;
+    double control[UMFPACK_CONTROL];
+    double factor_nonzeros   = 0;
+    double minimum_memory_mb = 0;
   };
 } // namespace porofrac
 

@@ -115,12 +115,7 @@ namespace porofrac
           cholesky.factorize(system.get_constrained_matrix(),
                              system.n_displacement_dofs(),
                              [](const double factor_mb) {
-                               const double available = available_memory_mb();
-                               if (available > 0 && factor_mb > available)
-                                 throw InsufficientMemory(
-                                   "its factor would need " + memory_size_text(factor_mb) +
-                                   ", more than the " + memory_size_text(available) +
-                                   " available to this run on this machine");
+                               require_memory(factor_mb, "its factor", "factorize it", "");
                              });
           cholesky.solve(x);
           return clock.wall_time();
