@@ -3,6 +3,7 @@
 #include <porofrac/base/exceptions.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -177,12 +178,18 @@ namespace porofrac
     const double       available = available_memory_mb();
     if (!(available > 0 && need > available))
       return;
+    std::string need_text = memory_size_text(need), available_text = memory_size_text(available);
+    if (need_text == available_text) // rounded alike: whole MB, the need up, the rest down
+      {
+        need_text      = std::to_string(static_cast<long>(std::ceil(need))) + " MB";
+        available_text = std::to_string(static_cast<long>(std::floor(available))) + " MB";
+      }
     throw InsufficientMemory(
-      what + " would need at least " + memory_size_text(need) +
+      what + " would need at least " + need_text +
       (copies > 1 ?
          " for the " + std::to_string(copies) + " processes on this machine that each " + each :
          "") +
-      ", more than the " + memory_size_text(available) + " available to this run on this machine" +
+      ", more than the " + available_text + " available to this run on this machine" +
       (advice.empty() ? "" : "; " + advice));
   }
 

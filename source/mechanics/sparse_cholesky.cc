@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/lac/lapack_templates.h>
 
+#include <porofrac/base/available_memory.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/sparse_cholesky.h>
 
@@ -43,6 +44,20 @@ namespace porofrac
         return bytes / (1024. * 1024.);
       }
 
+      const std::string advice = "use a coarser mesh or the iterative distributed solver "
+                                 "(Distributed = always, Mechanics/Distributed linear solver = "
+                                 "iterative)";
+
+      /// What the copy of the upper triangle (@p nnz entries of @p n rows: an index and a value
+      /// each, and the column starts) and CHOLMOD's analysis take at least, in MB. The analysis
+      /// (the ordering: AMD, METIS) took 23-38 bytes per entry of the process's memory on our
+      /// matrices (doc/mechanics.md); 20 are counted.
+      double
+      analysis_megabytes(const std::size_t n, const std::size_t nnz)
+      {
+        return (8. * (n + 1) + (16. + 20.) * nnz) / (1024. * 1024.);
+      }
+
       /// Throws for a CHOLMOD call that could not allocate its result: out of memory, or a
       /// factor with more entries than CHOLMOD's indices address. Neither is a
       /// singular block, so no other direct solver is tried in its place.
@@ -58,10 +73,7 @@ namespace porofrac
             "out of memory" :
             "CHOLMOD status " + std::to_string(common.status);
         throw InsufficientMemory("Cholesky factorization of the elasticity block: " + what +
-                                 " failed (" + reason +
-                                 "); use a coarser mesh or the iterative distributed solver "
-                                 "(Distributed = always, Mechanics/Distributed linear solver = "
-                                 "iterative)");
+                                 " failed (" + reason + "); " + advice);
       }
     } // namespace
 
@@ -131,6 +143,13 @@ namespace porofrac
         for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
           if (it->column() <= i)
             ++nnz;
+      // The copy and the ordering come before @p check_memory sees the factor.
+      require_memory(analysis_megabytes(n, nnz),
+                     "Cholesky factorization of the elasticity block: the copy of its upper "
+                     "triangle (" +
+                       std::to_string(nnz) + " entries) and its ordering",
+                     "factorize it",
+                     advice);
       cholmod_sparse *A = cholmod_l_allocate_sparse(
         n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL, &data->common);
       check_allocated(A, data->common, "copying the matrix");
