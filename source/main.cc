@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -207,9 +208,27 @@ namespace
         return {128 + interrupt_signal(),
                 "porofrac: run of deck '" + deck_name + "' interrupted: " + e.what()};
       }
+    catch (const InsufficientMemory &e)
+      {
+        return {3, "porofrac: out of memory in deck '" + deck_name + "': " + e.what()};
+      }
     catch (const SolverFailure &e)
       {
         return {3, "porofrac: solver failure in deck '" + deck_name + "': " + e.what()};
+      }
+    catch (const std::bad_alloc &)
+      {
+        // Only this process failed: the others may wait in a collective call for it, so every
+        // process is stopped (summary.json, where it could be written, says why).
+        const unsigned int n = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+        const std::string  message =
+          "porofrac: out of memory in deck '" + deck_name + "': " + out_of_memory_reason;
+        if (n == 1)
+          return {3, message};
+        std::cerr << message << " on process "
+                  << dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) << " of " << n
+                  << "; stopping all processes" << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 3);
       }
     catch (const std::exception &e)
       {

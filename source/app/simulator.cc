@@ -91,6 +91,25 @@ namespace porofrac
         context.progress << "*** Wrote " << context.path("summary.json") << std::endl;
       }
 
+      /// summary.json written by this process alone, for a failure the processes of the scene
+      /// cannot agree on (an allocation that failed on one of them): status "failed", @p reason
+      /// and this process's peak memory. The other processes are stopped afterwards (main()).
+      void
+      write_summary_alone(const std::string &reason,
+                          const double       wall_time,
+                          io::RunContext    &context)
+      {
+        dealii::Utilities::System::MemoryStats memory;
+        dealii::Utilities::System::get_memory_stats(memory);
+        io::Json &summary         = context.summary;
+        summary["status"]         = "failed";
+        summary["reason"]         = reason;
+        summary["wall_time_s"]    = wall_time;
+        summary["peak_memory_mb"] = memory.VmHWM / 1024.;
+        summary["failed_on_rank"] = dealii::Utilities::MPI::this_mpi_process(context.communicator);
+        summary.write_file(context.path("summary.json"));
+      }
+
       /// Reports the cut mesh (rank 0 of the scene's processes).
       template <int dim>
       void
@@ -332,6 +351,7 @@ namespace porofrac
       };
       try
         {
+          reserve_blas_workspace();
           build_and_run<dim>(prm, deck, physics, context);
         }
       catch (const SolverFailure &e)
@@ -357,6 +377,32 @@ namespace porofrac
         {
           finish("interrupted", e.what());
           throw;
+        }
+      catch (const std::bad_alloc &)
+        {
+          // The memory of the failed stage is freed by now. On one process the run stops as
+          // for any lack of memory; with several, this one cannot join the others' collective
+          // calls, so it reports alone and main() stops them all.
+          const std::string reason =
+            std::string(out_of_memory_reason) +
+            (Utilities::MPI::n_mpi_processes(communicator) > 1 ?
+               " on process " + std::to_string(Utilities::MPI::this_mpi_process(communicator)) +
+                 " of " + std::to_string(Utilities::MPI::n_mpi_processes(communicator)) :
+               std::string());
+          try
+            {
+              if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+                write_summary_alone(reason, wall_clock.wall_time(), context);
+              else
+                finish("failed", reason);
+            }
+          catch (const std::exception &)
+            {
+              // Not even summary.json could be written; the message still says why.
+            }
+          if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+            throw;
+          throw InsufficientMemory(reason);
         }
       finish("converged", "");
       if (print_timers)

@@ -4,6 +4,8 @@
 #include <porofrac/base/interrupt.h>
 #include <porofrac/io/text.h>
 
+#include <new>
+
 namespace porofrac
 {
   namespace app
@@ -77,6 +79,25 @@ namespace porofrac
           try
             {
               converged = take_step(stepper, label, attempt, failure, progress);
+            }
+          catch (const InsufficientMemory &e)
+            {
+              stop(true);
+              throw InsufficientMemory(label + ": " + e.what() + "; stopped in the step from t = " +
+                                       io::to_text(stepper.time()) +
+                                       " s. The last accepted state is written.");
+            }
+          catch (const std::bad_alloc &)
+            {
+              // On one process the step's memory is freed by now, and the accepted state can
+              // still be written; processes that run the loop together cannot agree on it, so
+              // there the failure goes on to main(), which stops them all.
+              if (dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
+                throw;
+              stop(true);
+              throw InsufficientMemory(
+                label + ": " + out_of_memory_reason + "; stopped in the step from t = " +
+                io::to_text(stepper.time()) + " s. The last accepted state is written.");
             }
           catch (const Interrupted &)
             {

@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <utility>
+
+#include <sys/resource.h>
 
 namespace porofrac
 {
@@ -43,6 +47,42 @@ namespace porofrac
         }
       return 0;
     }
+
+    /// The value in kB of @p key ("VmSize:") in /proc/self/status, 0 where it is absent.
+    double
+    status_kb(const std::string &key)
+    {
+      std::ifstream file("/proc/self/status");
+      std::string   line;
+      while (std::getline(file, line))
+        if (line.rfind(key, 0) == 0)
+          return std::atof(line.c_str() + key.size());
+      return 0;
+    }
+
+  } // namespace
+
+
+
+  double
+  process_memory_headroom_mb()
+  {
+    double headroom = 0;
+    for (const auto &[resource, key] : {std::pair{RLIMIT_AS, "VmSize:"}, {RLIMIT_DATA, "VmData:"}})
+      {
+        rlimit limit{};
+        if (getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+          continue;
+        const double left = std::max(limit.rlim_cur / 1024. - status_kb(key), 1.) / 1024.;
+        headroom          = headroom > 0 ? std::min(headroom, left) : left;
+      }
+    return headroom;
+  }
+
+
+
+  namespace
+  {
 
     /// The headroom (MB) of the group in directory @p dir, 0 without a limit.
     double
@@ -176,21 +216,43 @@ namespace porofrac
     const unsigned int copies    = ReplicatedSerialSolves::copies_per_machine();
     const double       need      = copies * megabytes;
     const double       available = available_memory_mb();
-    if (!(available > 0 && need > available))
-      return;
+    if (available > 0 && need > available)
+      {
+        const std::string copies_text =
+          copies > 1 ?
+            " for the " + std::to_string(copies) + " processes on this machine that each " + each :
+            "";
+        const auto [need_text, available_text] = memory_sizes_text(need, available);
+        throw InsufficientMemory(what + " would need at least " + need_text + copies_text +
+                                 ", more than the " + available_text +
+                                 " available to this run on this machine" +
+                                 (advice.empty() ? "" : "; " + advice));
+      }
+    // Each process allocates its own copy under its own limits.
+    const double headroom = process_memory_headroom_mb();
+    if (headroom > 0 && megabytes > headroom)
+      {
+        const auto [need_text, headroom_text] = memory_sizes_text(megabytes, headroom);
+        throw InsufficientMemory(what + " would need at least " + need_text + ", more than the " +
+                                 headroom_text +
+                                 " that this process may still allocate under its address-space "
+                                 "limit (ulimit -v or -d)" +
+                                 (advice.empty() ? "" : "; " + advice));
+      }
+  }
+
+
+
+  std::pair<std::string, std::string>
+  memory_sizes_text(const double need, const double available)
+  {
     std::string need_text = memory_size_text(need), available_text = memory_size_text(available);
     if (need_text == available_text) // rounded alike: whole MB, the need up, the rest down
       {
         need_text      = std::to_string(static_cast<long>(std::ceil(need))) + " MB";
         available_text = std::to_string(static_cast<long>(std::floor(available))) + " MB";
       }
-    throw InsufficientMemory(
-      what + " would need at least " + need_text +
-      (copies > 1 ?
-         " for the " + std::to_string(copies) + " processes on this machine that each " + each :
-         "") +
-      ", more than the " + available_text + " available to this run on this machine" +
-      (advice.empty() ? "" : "; " + advice));
+    return {need_text, available_text};
   }
 
 

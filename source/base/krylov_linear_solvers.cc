@@ -11,6 +11,7 @@
 
 #include <exception>
 #include <memory>
+#include <new>
 
 namespace porofrac
 {
@@ -128,6 +129,10 @@ namespace porofrac
           {
             throw;
           }
+        catch (const std::bad_alloc &)
+          {
+            throw;
+          }
         catch (const std::exception &e)
           {
             throw SolverFailure(what + ": preconditioner set-up failed (" + e.what() + ")");
@@ -165,6 +170,10 @@ namespace porofrac
             factors_of_matrix              = true;
             fallback.solve(x, b);
             return;
+          }
+        catch (const std::bad_alloc &)
+          {
+            throw;
           }
         catch (const std::exception &e)
           {

@@ -61,8 +61,13 @@ namespace porofrac
           reason += ": numerically singular matrix, " + std::to_string(infog[1]) +
                     " pivots eliminated of " +
                     std::to_string(problem->GetMatrix()->NumGlobalRows());
-        else if (infog[0] == -9 || infog[0] == -8 || infog[0] == -13)
+        else if (infog[0] == -9 || infog[0] == -8)
           reason += ": MUMPS ran out of its working memory";
+        else if (infog[0] == -7 || infog[0] == -13)
+          // An allocation that failed: INFOG(1) is the same on every process, so all stop.
+          throw InsufficientMemory(what + ": MUMPS " + step + " failed (" + reason +
+                                   ": an allocation of its working memory failed); use more "
+                                   "machines, a coarser mesh or an iterative linear solver");
         else
           reason += ", INFOG(2) = " + std::to_string(infog[1]);
       }
@@ -77,21 +82,61 @@ namespace porofrac
     const auto *mumps = dynamic_cast<Amesos_Mumps *>(solver.get());
     // INFO(15): this process's estimate, in MB, of MUMPS's in-core factorization.
     const double process_need = mumps ? const_cast<Amesos_Mumps *>(mumps)->GetINFO()[14] : 0.;
-    const double need         = sum_on_this_machine(process_need, comm);
-    estimate_mb               = dealii::Utilities::MPI::max(need, comm);
-    const double limit        = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
-    // A need above its machine's limit, and that limit, agreed by every process.
-    const bool   short_of_memory = limit > 0 && need > limit;
-    const double worst_need      = dealii::Utilities::MPI::max(short_of_memory ? need : 0., comm);
-    const double worst_limit     = dealii::Utilities::MPI::max(short_of_memory ? limit : 0., comm);
+    estimate_mb = dealii::Utilities::MPI::max(sum_on_this_machine(process_need, comm), comm);
+    require(process_need, "MUMPS would need an estimated % for its factorization", comm);
+  }
+
+
+
+  void
+  MumpsFactorization::check_analysis_memory(
+    const dealii::TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    const MPI_Comm comm = matrix.get_mpi_communicator();
+    const double   host = dealii::Utilities::MPI::this_mpi_process(comm) == 0 ? 1. : 0.;
+    const double   bytes =
+      16. * matrix.trilinos_matrix().NumMyNonzeros() + host * 20. * matrix.n_nonzero_elements();
+    require(bytes / (1024. * 1024.),
+            "the MUMPS analysis of " + std::to_string(matrix.m()) + " rows and " +
+              std::to_string(matrix.n_nonzero_elements()) +
+              " nonzeros (their copy and the ordering) would need at least %",
+            comm);
+  }
+
+
+
+  void
+  MumpsFactorization::require(const double       process_mb,
+                              const std::string &needs,
+                              const MPI_Comm     comm) const
+  {
+    namespace MPI         = dealii::Utilities::MPI;
+    const double need     = sum_on_this_machine(process_mb, comm);
+    const double limit    = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
+    const double headroom = process_memory_headroom_mb();
+    // A need above its machine's (or its process's) limit, and that limit, agreed by every
+    // process.
+    const bool   machine_short = limit > 0 && need > limit;
+    const bool   process_short = headroom > 0 && process_mb > headroom;
+    const double worst_need    = MPI::max(machine_short ? need : 0., comm);
+    const double worst_limit   = MPI::max(machine_short ? limit : 0., comm);
+    const double worst_process = MPI::max(process_short ? process_mb : 0., comm);
+    const double worst_room    = MPI::max(process_short ? headroom : 0., comm);
+    const auto   message       = [&](const double n, const double l, const std::string &where) {
+      const auto [need_text, limit_text] = memory_sizes_text(n, l);
+      std::string text                   = needs;
+      text.replace(text.find('%'), 1, need_text);
+      return what + ": " + text + ", more than the " + limit_text + where +
+             "; use more machines, a coarser mesh or an iterative linear solver";
+    };
     if (worst_need > 0)
-      {
-        throw InsufficientMemory(
-          what + ": MUMPS would need an estimated " + memory_size_text(worst_need) +
-          " for its factorization, more than the " + memory_size_text(worst_limit) +
-          " available to this run on this machine; use more machines, a coarser mesh or "
-          "an iterative linear solver");
-      }
+      throw InsufficientMemory(
+        message(worst_need, worst_limit, " available to this run on this machine"));
+    if (worst_process > 0)
+      throw InsufficientMemory(message(worst_process,
+                                       worst_room,
+                                       " that a process may still allocate under its "
+                                       "address-space limit (ulimit -v or -d)"));
   }
 
 
@@ -115,6 +160,7 @@ namespace porofrac
   {
     analysed = nullptr; // until the new analysis has passed its checks
     solver.reset();     // before the problem it refers to
+    check_analysis_memory(matrix);
     problem = std::make_unique<Epetra_LinearProblem>();
     problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&matrix.trilinos_matrix()));
     Amesos factory;

@@ -3,6 +3,7 @@
 #include <porofrac/geometry/gmsh_session.h>
 
 #include <exception>
+#include <new>
 #include <vector>
 
 #include <gmsh.h>
@@ -54,6 +55,10 @@ namespace porofrac
         {
           throw;
         }
+      catch (const std::bad_alloc &)
+        {
+          throw;
+        }
       catch (const std::string &s)
         {
           message = s;
@@ -79,6 +84,10 @@ namespace porofrac
       for (const auto &line : log)
         if (message.empty() && line.rfind("Error", 0) == 0)
           message = line.substr(line.find(':') == std::string::npos ? 0 : line.find(':') + 2);
+      // gmsh reports an allocation that failed inside it as an error like any other: it is no
+      // fault of the input.
+      if (message.find("bad_alloc") != std::string::npos)
+        throw std::bad_alloc();
       if (!message.empty())
         throw InputError(parameter, what + ": " + message);
     }

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
 
 namespace porofrac
@@ -94,6 +95,12 @@ namespace porofrac
       try
         {
           prm.set(parts.back(), value);
+        }
+      catch (const std::bad_alloc &)
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+            prm.leave_subsection();
+          throw;
         }
       catch (const std::exception &e)
         {

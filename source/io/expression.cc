@@ -9,6 +9,7 @@
 #include <porofrac/io/text.h>
 
 #include <cmath>
+#include <new>
 
 namespace porofrac
 {
@@ -103,6 +104,10 @@ namespace porofrac
                                !extra_variable.empty());
           for (unsigned int c = 0; c < expressions.size(); ++c)
             function->dealii::FunctionParser<dim>::value(dealii::Point<dim>(), c);
+        }
+      catch (const std::bad_alloc &)
+        {
+          throw;
         }
       catch (...)
         {

@@ -2,6 +2,7 @@
 #include <porofrac/io/json.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -235,11 +236,25 @@ namespace porofrac
     void
     Json::write_file(const std::string &filename) const
     {
-      std::ofstream out(filename);
-      if (!out)
-        throw std::runtime_error("cannot write '" + filename + "'");
-      write(out);
-      out << '\n';
+      // Written beside it and renamed over it, so that a run stopped while writing leaves the
+      // previous file whole.
+      const std::string temporary = filename + ".tmp";
+      {
+        std::ofstream out(temporary);
+        if (!out)
+          throw std::runtime_error("cannot write '" + filename + "'");
+        write(out);
+        out << '\n';
+        if (!out.flush())
+          throw std::runtime_error("cannot write '" + filename + "'");
+      }
+      std::error_code error;
+      std::filesystem::rename(temporary, filename, error);
+      if (error)
+        {
+          std::filesystem::remove(temporary, error);
+          throw std::runtime_error("cannot write '" + filename + "'");
+        }
     }
   } // namespace io
 } // namespace porofrac

@@ -2,6 +2,8 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <porofrac/base/available_memory.h>
+#include <porofrac/base/mpi_tools.h>
 #include <porofrac/mechanics/elasticity_amg.h>
 
 #include <map>
@@ -32,7 +34,30 @@ namespace porofrac
       ml.set("coarse: type", "Amesos-KLU");
       if (!smoothed_prolongator)
         ml.set("aggregation: damping factor", 0.);
+      check_memory(system.get_constrained_matrix(), smoothed_prolongator);
       amg.initialize(system.get_constrained_matrix(), ml);
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticityAmg<dim>::check_memory(const TrilinosWrappers::SparseMatrix &K,
+                                     const bool                            smoothed_prolongator)
+    {
+      // ML ends the process where an allocation fails, so its set-up is checked first, on
+      // every process together: 60 (smoothed) or 30 (unsmoothed) bytes per nonzero of K, four
+      // fifths of the hierarchies measured on the penny at h = 0.05 (doc/benchmarks/penny.md
+      // §5.1: about 73 and 37).
+      const double megabytes =
+        (smoothed_prolongator ? 60. : 30.) * K.trilinos_matrix().NumMyNonzeros() / (1024. * 1024.);
+      collectively(K.get_mpi_communicator(), [&] {
+        require_memory(megabytes,
+                       "the AMG hierarchy of the elasticity block (" + std::to_string(K.m()) +
+                         " rows, " + std::to_string(K.n_nonzero_elements()) + " nonzeros)",
+                       "",
+                       "use more processes or a coarser mesh");
+      });
     }
 
 

@@ -7,6 +7,8 @@
 #include <porofrac/base/exceptions.h>
 #include <porofrac/mechanics/full_system_solver.h>
 
+#include <new>
+
 namespace porofrac
 {
   namespace mechanics
@@ -77,6 +79,11 @@ namespace porofrac
         {
           factorization.reset();
           throw InsufficientMemory(std::string("contact mechanics: ") + e.what());
+        }
+      catch (const std::bad_alloc &)
+        {
+          factorization.reset();
+          throw;
         }
       catch (const std::exception &e)
         {

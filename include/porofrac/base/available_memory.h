@@ -3,6 +3,7 @@
 #define POROFRAC_BASE_AVAILABLE_MEMORY_H
 
 #include <string>
+#include <utility>
 
 namespace porofrac
 {
@@ -15,6 +16,16 @@ namespace porofrac
    */
   double
   available_memory_mb();
+
+  /**
+   * What this process may still allocate, in MB, under its address-space and data-segment limits
+   * (ulimit -v, -d; some batch systems set them): the limit less the address space (data) it has
+   * mapped; 0 without a limit. Beyond it an allocation fails instead of having the process
+   * killed, and not every library survives that. Unlike available_memory_mb() it is this
+   * process's alone.
+   */
+  double
+  process_memory_headroom_mb();
 
   /**
    * Caps available_memory_mb() at @p megabytes (0: no cap), for this process, e.g. to exercise
@@ -50,7 +61,9 @@ namespace porofrac
    * Throws InsufficientMemory "<what> would need at least <need>[ for the N processes on this
    * machine that each <each>], more than the <available> available to this run on this machine[;
    * <advice>]" if @p megabytes, counted once per ReplicatedSerialSolves copy, exceed
-   * available_memory_mb(); nothing if the available memory cannot be read. Call it before the
+   * available_memory_mb(), or if @p megabytes (one copy) exceed process_memory_headroom_mb() ("...,
+   * more than the <headroom> that this process may still allocate under its address-space
+   * limit"); nothing if the available memory cannot be read. Call it before the
    * allocation it guards: on Linux an allocation beyond the memory does not fail but has the
    * process killed.
    */
@@ -59,6 +72,11 @@ namespace porofrac
                  const std::string &what,
                  const std::string &each,
                  const std::string &advice);
+
+  /// @p need and @p available as memory_size_text(), or in whole MB (the need rounded up, the
+  /// rest down) where the two would read alike.
+  std::pair<std::string, std::string>
+  memory_sizes_text(double need, double available);
 
   /// @p megabytes as "12.3 GB" or, below a GB, "456 MB" (below 10 MB "4.56 MB").
   std::string

@@ -15,6 +15,17 @@ namespace porofrac
    */
   std::string
   blas_description();
+
+  /**
+   * Has OpenBLAS allocate its work buffer (128 MB of address space) now, while the process is
+   * small, by one call of a routine that needs it; later calls reuse it. OpenBLAS (0.3.21)
+   * retries a buffer allocation that fails without end, so a first BLAS call deep in a
+   * factorization under an address-space limit (ulimit -v) would hang the run instead of
+   * failing. Throws std::bad_alloc where the buffer does not fit; nothing where the BLAS is not
+   * OpenBLAS.
+   */
+  void
+  reserve_blas_workspace();
 } // namespace porofrac
 
 #endif

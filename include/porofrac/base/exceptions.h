@@ -40,9 +40,12 @@ namespace porofrac
   };
 
   /**
-   * A solver that found, before allocating it, that its factorization or dense matrices would
-   * need more memory than the run has (available_memory_mb()): no other direct solver is tried
-   * in its place, as it would need at least as much.
+   * The run has not enough memory: a solver found, before allocating it, that its factorization
+   * or dense matrices would need more than the run has (available_memory_mb()), a library
+   * reported that it ran out of memory, or an allocation failed (std::bad_alloc, converted where
+   * the run can still stop cleanly: the time loop, app::run_scene). No other direct solver is
+   * tried in its place, as it would need at least as much, and a time step is not cut for it, as a
+   * shorter step needs the same memory. main() reports it as "out of memory" (exit status 3).
    */
   class InsufficientMemory : public SolverFailure
   {
@@ -52,6 +55,11 @@ namespace porofrac
     {
     }
   };
+
+  /// The reason an InsufficientMemory converted from std::bad_alloc gives.
+  inline constexpr const char *out_of_memory_reason =
+    "a memory allocation failed (out of memory); use a coarser mesh, more memory or more "
+    "processes";
 
   /**
    * The run was asked to stop (SIGINT or SIGTERM, see base/interrupt.h). Time-dependent scenes

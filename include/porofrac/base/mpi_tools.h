@@ -7,6 +7,7 @@
 #include <porofrac/base/exceptions.h>
 
 #include <cmath>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -26,7 +27,8 @@ namespace porofrac
 
   /**
    * Runs @p work on every process of @p communicator. If it throws on any of them (an
-   * InputError, InsufficientMemory, SolverFailure, Interrupted or another std::exception),
+   * InputError, InsufficientMemory or std::bad_alloc (thrown as InsufficientMemory),
+   * SolverFailure, Interrupted or another std::exception),
    * every process throws the same exception, with the message of the lowest failing rank,
    * after the vote. Work
    * whose outcome may differ between processes (a point constraint seen by one process only,
@@ -58,6 +60,10 @@ namespace porofrac
     catch (const Interrupted &e)
       {
         failure = {int(FailureKind::interrupted), "", e.what()};
+      }
+    catch (const std::bad_alloc &)
+      {
+        failure = {int(FailureKind::memory), "", out_of_memory_reason};
       }
     catch (const std::exception &e)
       {

@@ -102,9 +102,23 @@ namespace porofrac
     check(const int status, const char *step) const;
 
     /// Throws (on every process of @p comm) if the analysed factorization needs more memory than
-    /// some machine has.
+    /// some machine has, or than some process may allocate.
     void
     check_memory(const MPI_Comm comm);
+
+    /// Throws (on every process) before the analysis of @p matrix if the matrix's copy and its
+    /// ordering would not fit: 16 bytes per local nonzero on each process (the coordinate
+    /// triplets MUMPS is given) and 20 per nonzero of the whole matrix on the host, which orders
+    /// the whole graph (as UMFPACK's ordering, base/sparse_lu.h: a lower bound).
+    void
+    check_analysis_memory(const dealii::TrilinosWrappers::SparseMatrix &matrix) const;
+
+    /// Throws InsufficientMemory on every process of @p comm where this process's @p process_mb,
+    /// summed over its machine, exceeds the memory available there, or exceeds the process's
+    /// own headroom (process_memory_headroom_mb()). @p needs says what needs it, with % where
+    /// the amount goes ("MUMPS would need an estimated % for its factorization").
+    void
+    require(double process_mb, const std::string &needs, MPI_Comm comm) const;
 
     const std::string                     what;
     std::unique_ptr<Epetra_LinearProblem> problem;

@@ -37,6 +37,11 @@ namespace porofrac
       }
 
     private:
+      /// Throws InsufficientMemory on every process if the AMG set-up of @p K would not fit
+      /// (require_memory(); 60 bytes per nonzero with the smoothed prolongator, 30 without).
+      static void
+      check_memory(const dealii::TrilinosWrappers::SparseMatrix &K, bool smoothed_prolongator);
+
       /// The rigid-body modes, mode by mode, rotations about the centre of the domain.
       void
       make_rigid_body_modes(const DistributedElasticitySystem<dim> &system);
