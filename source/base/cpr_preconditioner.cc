@@ -2,10 +2,13 @@
 #include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <porofrac/base/available_memory.h>
 #include <porofrac/base/cpr_preconditioner.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/mpi_tools.h>
 
 #include <map>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -135,6 +138,22 @@ namespace porofrac
       make_pressure_pattern(matrix);
     jacobian = &matrix;
     assemble_pressure(matrix);
+    // ML and Ifpack end the process where an allocation fails, so their set-up is checked
+    // first, on every process together: the ILU(0) factors take at least 12 bytes per nonzero
+    // of J (values and column indices), the AMG hierarchy of A_p at least as much per nonzero
+    // of A_p again (a lower bound).
+    const double megabytes =
+      12. *
+      (matrix.trilinos_matrix().NumMyNonzeros() + pressure.trilinos_matrix().NumMyNonzeros()) /
+      (1024. * 1024.);
+    collectively(matrix.get_mpi_communicator(), [&] {
+      require_memory(megabytes,
+                     "the CPR preconditioner of " + std::to_string(matrix.m()) + " rows and " +
+                       std::to_string(matrix.n_nonzero_elements()) +
+                       " nonzeros (its ILU(0) factors and the AMG hierarchy of the pressure block)",
+                     "",
+                     "use more processes or a coarser mesh");
+    });
 
     // Smoothed aggregation with Gauss-Seidel smoothing: A_p is an M-matrix up to the upwind
     // derivatives of the mobilities, not symmetric (Chebyshev needs symmetry).
