@@ -229,6 +229,7 @@ namespace
                   << dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) << " of " << n
                   << "; stopping all processes" << std::endl;
         MPI_Abort(MPI_COMM_WORLD, 3);
+        return {3, message}; // not reached: MPI_Abort ends the process
       }
     catch (const std::exception &e)
       {
