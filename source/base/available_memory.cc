@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/available_memory.h>
 #include <porofrac/base/exceptions.h>
+#include <porofrac/base/mpi_tools.h>
 
 #include <algorithm>
 #include <cmath>
@@ -239,6 +240,54 @@ namespace porofrac
                                  "limit (ulimit -v or -d)" +
                                  (advice.empty() ? "" : "; " + advice));
       }
+  }
+
+
+
+  void
+  require_memory_on_every_process(const double       process_mb,
+                                  const std::string &needs,
+                                  const std::string &advice,
+                                  const MPI_Comm     communicator,
+                                  const double       machine_limit_mb)
+  {
+    const bool alone = communicator == MPI_COMM_SELF;
+    const auto worst = [&](const double value) {
+      return alone ? value : dealii::Utilities::MPI::max(value, communicator);
+    };
+    const double need     = sum_on_this_machine(process_mb, communicator);
+    const double sharing  = sum_on_this_machine(1., communicator);
+    const double limit    = machine_limit_mb > 0 ? machine_limit_mb : available_memory_mb();
+    const double headroom = process_memory_headroom_mb();
+    // The processes that share a machine share its memory; each has its own address space.
+    const bool   machine_short = limit > 0 && need > limit;
+    const bool   process_short = headroom > 0 && process_mb > headroom;
+    const double worst_need    = worst(machine_short ? need : 0.);
+    const double worst_limit   = worst(machine_short ? limit : 0.);
+    const double worst_sharing = worst(machine_short ? sharing : 0.);
+    const double worst_process = worst(process_short ? process_mb : 0.);
+    const double worst_room    = worst(process_short ? headroom : 0.);
+    const auto   message       = [&](const double n, const double l, const std::string &where) {
+      const auto [need_text, limit_text] = memory_sizes_text(n, l);
+      std::string text                   = needs;
+      const auto  mark                   = text.find('%');
+      if (mark != std::string::npos)
+        text.replace(mark, 1, need_text);
+      return text + ", more than the " + limit_text + where + (advice.empty() ? "" : "; " + advice);
+    };
+    if (worst_need > 0)
+      throw InsufficientMemory(message(worst_need,
+                                       worst_limit,
+                                       worst_sharing > 1 ?
+                                         " available to the " +
+                                           std::to_string(std::lround(worst_sharing)) +
+                                           " processes of this run on this machine" :
+                                         " available to this run on this machine"));
+    if (worst_process > 0)
+      throw InsufficientMemory(message(worst_process,
+                                       worst_room,
+                                       " that a process may still allocate under its "
+                                       "address-space limit (ulimit -v or -d)"));
   }
 
 

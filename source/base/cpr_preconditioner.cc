@@ -146,14 +146,14 @@ namespace porofrac
       12. *
       (matrix.trilinos_matrix().NumMyNonzeros() + pressure.trilinos_matrix().NumMyNonzeros()) /
       (1024. * 1024.);
-    collectively(matrix.get_mpi_communicator(), [&] {
-      require_memory(megabytes,
-                     "the CPR preconditioner of " + std::to_string(matrix.m()) + " rows and " +
-                       std::to_string(matrix.n_nonzero_elements()) +
-                       " nonzeros (its ILU(0) factors and the AMG hierarchy of the pressure block)",
-                     "",
-                     "use more processes or a coarser mesh");
-    });
+    require_memory_on_every_process(
+      megabytes,
+      "the CPR preconditioner of " + std::to_string(matrix.m()) + " rows and " +
+        std::to_string(matrix.n_nonzero_elements()) +
+        " nonzeros (its ILU(0) factors and the AMG hierarchy of the pressure block) would need "
+        "at least %",
+      "use more processes or a coarser mesh",
+      matrix.get_mpi_communicator());
 
     // Smoothed aggregation with Gauss-Seidel smoothing: A_p is an M-matrix up to the upwind
     // derivatives of the mobilities, not symmetric (Chebyshev needs symmetry).

@@ -110,33 +110,12 @@ namespace porofrac
                               const std::string &needs,
                               const MPI_Comm     comm) const
   {
-    namespace MPI         = dealii::Utilities::MPI;
-    const double need     = sum_on_this_machine(process_mb, comm);
-    const double limit    = memory_limit_mb > 0 ? memory_limit_mb : available_memory_mb();
-    const double headroom = process_memory_headroom_mb();
-    // A need above its machine's (or its process's) limit, and that limit, agreed by every
-    // process.
-    const bool   machine_short = limit > 0 && need > limit;
-    const bool   process_short = headroom > 0 && process_mb > headroom;
-    const double worst_need    = MPI::max(machine_short ? need : 0., comm);
-    const double worst_limit   = MPI::max(machine_short ? limit : 0., comm);
-    const double worst_process = MPI::max(process_short ? process_mb : 0., comm);
-    const double worst_room    = MPI::max(process_short ? headroom : 0., comm);
-    const auto   message       = [&](const double n, const double l, const std::string &where) {
-      const auto [need_text, limit_text] = memory_sizes_text(n, l);
-      std::string text                   = needs;
-      text.replace(text.find('%'), 1, need_text);
-      return what + ": " + text + ", more than the " + limit_text + where +
-             "; use more machines, a coarser mesh or an iterative linear solver";
-    };
-    if (worst_need > 0)
-      throw InsufficientMemory(
-        message(worst_need, worst_limit, " available to this run on this machine"));
-    if (worst_process > 0)
-      throw InsufficientMemory(message(worst_process,
-                                       worst_room,
-                                       " that a process may still allocate under its "
-                                       "address-space limit (ulimit -v or -d)"));
+    require_memory_on_every_process(process_mb,
+                                    what + ": " + needs,
+                                    "use more machines, a coarser mesh or an iterative linear "
+                                    "solver",
+                                    comm,
+                                    memory_limit_mb);
   }
 
 

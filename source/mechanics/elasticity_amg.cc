@@ -51,13 +51,13 @@ namespace porofrac
       // §5.1: about 73 and 37).
       const double megabytes =
         (smoothed_prolongator ? 60. : 30.) * K.trilinos_matrix().NumMyNonzeros() / (1024. * 1024.);
-      collectively(K.get_mpi_communicator(), [&] {
-        require_memory(megabytes,
-                       "the AMG hierarchy of the elasticity block (" + std::to_string(K.m()) +
-                         " rows, " + std::to_string(K.n_nonzero_elements()) + " nonzeros)",
-                       "",
-                       "use more processes or a coarser mesh");
-      });
+      require_memory_on_every_process(megabytes,
+                                      "the AMG hierarchy of the elasticity block (" +
+                                        std::to_string(K.m()) + " rows, " +
+                                        std::to_string(K.n_nonzero_elements()) +
+                                        " nonzeros) would need at least %",
+                                      "use more processes or a coarser mesh",
+                                      K.get_mpi_communicator());
     }
 
 

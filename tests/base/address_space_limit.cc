@@ -11,22 +11,11 @@
 #include <iostream>
 #include <string>
 
+#include "../address_space.h"
 #include <sys/resource.h>
 
 namespace
 {
-  /// The address space this process maps, in kB (VmSize of /proc/self/status).
-  double
-  mapped_kb()
-  {
-    std::ifstream file("/proc/self/status");
-    std::string   line;
-    while (std::getline(file, line))
-      if (line.rfind("VmSize:", 0) == 0)
-        return std::stod(line.substr(7));
-    return 0;
-  }
-
   void
   require(const double megabytes)
   {
@@ -63,7 +52,7 @@ main()
             << std::endl;
 
   rlimit limited   = original;
-  limited.rlim_cur = static_cast<rlim_t>((mapped_kb() + 200 * 1024.) * 1024.);
+  limited.rlim_cur = static_cast<rlim_t>((porofrac_tests::mapped_kb() + 200 * 1024.) * 1024.);
   setrlimit(RLIMIT_AS, &limited);
   const double headroom = porofrac::process_memory_headroom_mb();
   std::cout << "200 MB above the mapped address space: headroom between 150 and 200 MB: "

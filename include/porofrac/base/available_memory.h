@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include <mpi.h>
+
 namespace porofrac
 {
   /**
@@ -72,6 +74,23 @@ namespace porofrac
                  const std::string &what,
                  const std::string &each,
                  const std::string &advice);
+
+  /**
+   * require_memory() for a need that every process of @p communicator has at once (collective):
+   * the needs of the processes on one machine, summed, against the memory available to it
+   * (available_memory_mb(), or @p machine_limit_mb where positive), and each process's own need
+   * against process_memory_headroom_mb(). Every process throws the same InsufficientMemory, with
+   * the largest need and limit over the processes that are short: "<needs>, more than the <limit>
+   * available to [the N processes of] this run on this machine; <advice>" or "<needs>, more than
+   * the <headroom> that a process may still allocate under its address-space limit (ulimit -v or
+   * -d); <advice>", the need written in place of the '%' in @p needs.
+   */
+  void
+  require_memory_on_every_process(double             process_mb,
+                                  const std::string &needs,
+                                  const std::string &advice,
+                                  MPI_Comm           communicator,
+                                  double             machine_limit_mb = 0);
 
   /// @p need and @p available as memory_size_text(), or in whole MB (the need rounded up, the
   /// rest down) where the two would read alike.

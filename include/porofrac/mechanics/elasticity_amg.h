@@ -38,7 +38,8 @@ namespace porofrac
 
     private:
       /// Throws InsufficientMemory on every process if the AMG set-up of @p K would not fit
-      /// (require_memory(); 60 bytes per nonzero with the smoothed prolongator, 30 without).
+      /// (require_memory_on_every_process(); 60 bytes per nonzero with the smoothed prolongator, 30
+      /// without).
       static void
       check_memory(const dealii::TrilinosWrappers::SparseMatrix &K, bool smoothed_prolongator);
 
