@@ -65,49 +65,38 @@ namespace porofrac
         return lock;
       }
 
-      /// summary.json (rank 0) with the status, the wall time and the peak memory of every
-      /// process of the scene. Collective.
+      /// summary.json with the status, the wall time and the peak memory: by rank 0 with the
+      /// peak of every process of the scene (collective), or, @p alone, by this process with its
+      /// own peak and its rank (`failed_on_rank`), for a failure the processes cannot agree on
+      /// (an allocation that failed on one of them; main() stops the others afterwards).
       void
       write_summary(const std::string &status,
                     const std::string &reason,
                     const double       wall_time,
-                    io::RunContext    &context)
+                    io::RunContext    &context,
+                    const bool         alone = false)
       {
         using namespace dealii;
         Utilities::System::MemoryStats memory;
         Utilities::System::get_memory_stats(memory);
+        const double              own  = memory.VmHWM / 1024.;
+        const unsigned int        rank = Utilities::MPI::this_mpi_process(context.communicator);
         const std::vector<double> peak =
-          Utilities::MPI::gather(context.communicator, memory.VmHWM / 1024., 0);
-        if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
+          alone ? std::vector<double>{own} : Utilities::MPI::gather(context.communicator, own, 0);
+        if (!alone && rank != 0)
           return;
         io::Json &summary = context.summary;
         summary["status"] = status;
         if (!reason.empty())
           summary["reason"] = reason;
-        summary["wall_time_s"]             = wall_time;
-        summary["peak_memory_mb"]          = *std::max_element(peak.begin(), peak.end());
-        summary["peak_memory_mb_per_rank"] = peak;
+        summary["wall_time_s"]    = wall_time;
+        summary["peak_memory_mb"] = *std::max_element(peak.begin(), peak.end());
+        if (alone)
+          summary["failed_on_rank"] = rank;
+        else
+          summary["peak_memory_mb_per_rank"] = peak;
         summary.write_file(context.path("summary.json"));
         context.progress << "*** Wrote " << context.path("summary.json") << std::endl;
-      }
-
-      /// summary.json written by this process alone, for a failure the processes of the scene
-      /// cannot agree on (an allocation that failed on one of them): status "failed", @p reason
-      /// and this process's peak memory. The other processes are stopped afterwards (main()).
-      void
-      write_summary_alone(const std::string &reason,
-                          const double       wall_time,
-                          io::RunContext    &context)
-      {
-        dealii::Utilities::System::MemoryStats memory;
-        dealii::Utilities::System::get_memory_stats(memory);
-        io::Json &summary         = context.summary;
-        summary["status"]         = "failed";
-        summary["reason"]         = reason;
-        summary["wall_time_s"]    = wall_time;
-        summary["peak_memory_mb"] = memory.VmHWM / 1024.;
-        summary["failed_on_rank"] = dealii::Utilities::MPI::this_mpi_process(context.communicator);
-        summary.write_file(context.path("summary.json"));
       }
 
       /// Reports the cut mesh (rank 0 of the scene's processes).
@@ -392,7 +381,7 @@ namespace porofrac
           try
             {
               if (Utilities::MPI::n_mpi_processes(communicator) > 1)
-                write_summary_alone(reason, wall_clock.wall_time(), context);
+                write_summary("failed", reason, wall_clock.wall_time(), context, true);
               else
                 finish("failed", reason);
             }

@@ -249,10 +249,12 @@ namespace porofrac
                                   const std::string &needs,
                                   const std::string &advice,
                                   const MPI_Comm     communicator,
-                                  const double       machine_limit_mb)
+                                  const double       machine_limit_mb,
+                                  const double       address_space_mb)
   {
-    const bool alone = communicator == MPI_COMM_SELF;
-    const auto worst = [&](const double value) {
+    const double mapped_mb = address_space_mb > 0 ? address_space_mb : process_mb;
+    const bool   alone     = communicator == MPI_COMM_SELF;
+    const auto   worst     = [&](const double value) {
       return alone ? value : dealii::Utilities::MPI::max(value, communicator);
     };
     const double need     = sum_on_this_machine(process_mb, communicator);
@@ -261,11 +263,11 @@ namespace porofrac
     const double headroom = process_memory_headroom_mb();
     // The processes that share a machine share its memory; each has its own address space.
     const bool   machine_short = limit > 0 && need > limit;
-    const bool   process_short = headroom > 0 && process_mb > headroom;
+    const bool   process_short = headroom > 0 && mapped_mb > headroom;
     const double worst_need    = worst(machine_short ? need : 0.);
     const double worst_limit   = worst(machine_short ? limit : 0.);
     const double worst_sharing = worst(machine_short ? sharing : 0.);
-    const double worst_process = worst(process_short ? process_mb : 0.);
+    const double worst_process = worst(process_short ? mapped_mb : 0.);
     const double worst_room    = worst(process_short ? headroom : 0.);
     const auto   message       = [&](const double n, const double l, const std::string &where) {
       const auto [need_text, limit_text] = memory_sizes_text(n, l);

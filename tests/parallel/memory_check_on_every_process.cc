@@ -3,7 +3,8 @@
 // count together against the machine's memory (100 MB each passes alone under a 150 MB limit, is
 // refused together, passes under 250 MB); a need that only one process has stops both with the
 // same message; a need above one process's address-space headroom (ulimit -v, set on rank 1
-// only) stops both, naming the address-space limit. On MPI_COMM_SELF each process counts alone.
+// only) stops both, naming the address-space limit, where the need in address space (not the
+// resident one) is above it. On MPI_COMM_SELF each process counts alone.
 // mpi: 2
 #include <deal.II/base/mpi.h>
 
@@ -85,8 +86,9 @@ main(int argc, char **argv)
   std::string outcome = "passes";
   try
     {
+      // The resident need is small; the address space it maps is what the limit refuses.
       porofrac::require_memory_on_every_process(
-        rank == 1 ? 400 : 1, "a test allocation would need at least %", "", MPI_COMM_WORLD, 1e9);
+        1, "a test allocation would need at least %", "", MPI_COMM_WORLD, 1e9, rank == 1 ? 400 : 1);
     }
   catch (const porofrac::InsufficientMemory &e)
     {
@@ -102,15 +104,31 @@ main(int argc, char **argv)
                    "yes" :
                    "no");
     }
+  // A resident need above the headroom passes where the address space it maps is small.
+  std::string resident = "passes";
+  try
+    {
+      porofrac::require_memory_on_every_process(
+        rank == 1 ? 400 : 1, "%", "", MPI_COMM_WORLD, 1e9, 1);
+    }
+  catch (const porofrac::InsufficientMemory &)
+    {
+      resident = "refused";
+    }
   if (rank == 1)
     setrlimit(RLIMIT_AS, &original);
   const std::vector<std::string> outcomes = mpi_utils::gather(MPI_COMM_WORLD, outcome);
   if (rank == 0)
     {
-      std::cout << "400 MB on rank 1, 200 MB above its address space (ulimit -v on rank 1)"
+      std::cout << "400 MB of address space on rank 1, 200 MB above its address space "
+                   "(ulimit -v on rank 1)"
                 << std::endl;
       for (unsigned int r = 0; r < outcomes.size(); ++r)
         std::cout << "  rank " << r << ": " << outcomes[r] << std::endl;
     }
+  const std::vector<std::string> residents = mpi_utils::gather(MPI_COMM_WORLD, resident);
+  if (rank == 0)
+    std::cout << "400 MB resident and 1 MB of address space on rank 1, under the same limit: "
+              << residents[0] << ", " << residents[1] << std::endl;
   check("limit lifted: 100 MB on each process, 250 MB on the machine", 100, 250);
 }

@@ -83,14 +83,17 @@ namespace porofrac
    * the largest need and limit over the processes that are short: "<needs>, more than the <limit>
    * available to [the N processes of] this run on this machine; <advice>" or "<needs>, more than
    * the <headroom> that a process may still allocate under its address-space limit (ulimit -v or
-   * -d); <advice>", the need written in place of the '%' in @p needs.
+   * -d); <advice>", the need written in place of the '%' in @p needs. Where a library maps more
+   * address space than it touches, @p address_space_mb (if positive) is the need compared with
+   * the headroom.
    */
   void
   require_memory_on_every_process(double             process_mb,
                                   const std::string &needs,
                                   const std::string &advice,
                                   MPI_Comm           communicator,
-                                  double             machine_limit_mb = 0);
+                                  double             machine_limit_mb = 0,
+                                  double             address_space_mb = 0);
 
   /// @p need and @p available as memory_size_text(), or in whole MB (the need rounded up, the
   /// rest down) where the two would read alike.

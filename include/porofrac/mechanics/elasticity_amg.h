@@ -38,8 +38,8 @@ namespace porofrac
 
     private:
       /// Throws InsufficientMemory on every process if the AMG set-up of @p K would not fit
-      /// (require_memory_on_every_process(); 60 bytes per nonzero with the smoothed prolongator, 30
-      /// without).
+      /// (require_memory_on_every_process(); per nonzero of K, 48 bytes of resident memory and
+      /// 65 of address space with the smoothed prolongator, 13.5 and 19.5 without).
       static void
       check_memory(const dealii::TrilinosWrappers::SparseMatrix &K, bool smoothed_prolongator);
 
