@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace porofrac
 {
   namespace io
@@ -237,8 +239,9 @@ namespace porofrac
     Json::write_file(const std::string &filename) const
     {
       // Written beside it and renamed over it, so that a run stopped while writing leaves the
-      // previous file whole.
-      const std::string temporary = filename + ".tmp";
+      // previous file whole; the temporary is this process's own, so that processes writing the
+      // same file at once (each stopping alone) leave one of their files whole.
+      const std::string temporary = filename + ".tmp." + std::to_string(getpid());
       {
         std::ofstream out(temporary);
         if (!out)
