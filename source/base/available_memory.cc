@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/array_view.h>
+
 #include <porofrac/base/available_memory.h>
 #include <porofrac/base/exceptions.h>
 #include <porofrac/base/mpi_tools.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -253,23 +256,26 @@ namespace porofrac
                                   const double       address_space_mb)
   {
     const double mapped_mb = address_space_mb > 0 ? address_space_mb : process_mb;
-    const bool   alone     = communicator == MPI_COMM_SELF;
-    const auto   worst     = [&](const double value) {
-      return alone ? value : dealii::Utilities::MPI::max(value, communicator);
-    };
-    const double need     = sum_on_this_machine(process_mb, communicator);
-    const double sharing  = sum_on_this_machine(1., communicator);
-    const double limit    = machine_limit_mb > 0 ? machine_limit_mb : available_memory_mb();
-    const double headroom = process_memory_headroom_mb();
+    const double need      = sum_on_this_machine(process_mb, communicator);
+    const double sharing   = sum_on_this_machine(1., communicator);
+    const double limit     = machine_limit_mb > 0 ? machine_limit_mb : available_memory_mb();
+    const double headroom  = process_memory_headroom_mb();
     // The processes that share a machine share its memory; each has its own address space.
-    const bool   machine_short = limit > 0 && need > limit;
-    const bool   process_short = headroom > 0 && mapped_mb > headroom;
-    const double worst_need    = worst(machine_short ? need : 0.);
-    const double worst_limit   = worst(machine_short ? limit : 0.);
-    const double worst_sharing = worst(machine_short ? sharing : 0.);
-    const double worst_process = worst(process_short ? mapped_mb : 0.);
-    const double worst_room    = worst(process_short ? headroom : 0.);
-    const auto   message       = [&](const double n, const double l, const std::string &where) {
+    // The largest shortfalls over the processes, in one reduction.
+    const bool                  machine_short = limit > 0 && need > limit;
+    const bool                  process_short = headroom > 0 && mapped_mb > headroom;
+    const std::array<double, 5> own{{machine_short ? need : 0.,
+                                     machine_short ? limit : 0.,
+                                     machine_short ? sharing : 0.,
+                                     process_short ? mapped_mb : 0.,
+                                     process_short ? headroom : 0.}};
+    std::array<double, 5>       worst = own;
+    if (communicator != MPI_COMM_SELF)
+      dealii::Utilities::MPI::max(dealii::ArrayView<const double>(own.data(), own.size()),
+                                  communicator,
+                                  dealii::ArrayView<double>(worst.data(), worst.size()));
+    const auto [worst_need, worst_limit, worst_sharing, worst_process, worst_room] = worst;
+    const auto message = [&](const double n, const double l, const std::string &where) {
       const auto [need_text, limit_text] = memory_sizes_text(n, l);
       std::string text                   = needs;
       const auto  mark                   = text.find('%');
