@@ -255,11 +255,10 @@ namespace porofrac
                                   const double       machine_limit_mb,
                                   const double       address_space_mb)
   {
-    const double mapped_mb = address_space_mb > 0 ? address_space_mb : process_mb;
-    const double need      = sum_on_this_machine(process_mb, communicator);
-    const double sharing   = sum_on_this_machine(1., communicator);
-    const double limit     = machine_limit_mb > 0 ? machine_limit_mb : available_memory_mb();
-    const double headroom  = process_memory_headroom_mb();
+    const double mapped_mb     = address_space_mb > 0 ? address_space_mb : process_mb;
+    const auto [need, sharing] = sum_on_this_machine<2>({{process_mb, 1.}}, communicator);
+    const double limit         = machine_limit_mb > 0 ? machine_limit_mb : available_memory_mb();
+    const double headroom      = process_memory_headroom_mb();
     // The processes that share a machine share its memory; each has its own address space.
     // The largest shortfalls over the processes, in one reduction.
     const bool                  machine_short = limit > 0 && need > limit;

@@ -5,7 +5,6 @@
 #include <porofrac/base/available_memory.h>
 #include <porofrac/base/cpr_preconditioner.h>
 #include <porofrac/base/exceptions.h>
-#include <porofrac/base/mpi_tools.h>
 
 #include <map>
 #include <string>

@@ -3,6 +3,7 @@
 
 #include <porofrac/base/exceptions.h>
 #include <porofrac/geometry/boundary_entries.h>
+#include <porofrac/geometry/fracture_band.h>
 #include <porofrac/geometry/gmsh_model.h>
 #include <porofrac/geometry/gmsh_session.h>
 #include <porofrac/geometry/mesh_generator.h>
@@ -132,14 +133,11 @@ namespace porofrac
           gmsh::model::mesh::field::setNumber(distance, "NNodesByEdge", 200);
           const int threshold = gmsh::model::mesh::field::add("Threshold");
           gmsh::model::mesh::field::setNumber(threshold, "IField", distance);
-          gmsh::model::mesh::field::setNumber(threshold, "LcMin", prm.fracture_mesh_size);
-          gmsh::model::mesh::field::setNumber(threshold, "LcMax", prm.mesh_size);
+          const FractureBand band(prm);
+          gmsh::model::mesh::field::setNumber(threshold, "LcMin", band.h_fracture);
+          gmsh::model::mesh::field::setNumber(threshold, "LcMax", band.h_far);
           gmsh::model::mesh::field::setNumber(threshold, "DistMin", 0.);
-          gmsh::model::mesh::field::setNumber(threshold,
-                                              "DistMax",
-                                              prm.transition_distance > 0 ?
-                                                prm.transition_distance :
-                                                5 * prm.mesh_size);
+          gmsh::model::mesh::field::setNumber(threshold, "DistMax", band.transition);
           fields.push_back(threshold);
         }
       set_background_size(prm, 2, fields);

@@ -107,8 +107,9 @@ namespace porofrac
                         Patterns::Double(1),
                         "Meshes with more cells are refused before they are made: the cells of "
                         "a generated mesh are estimated from the domain, the mesh sizes, the "
-                        "size expression (sampled on a regular grid) and the fractures before "
-                        "gmsh runs, and counted before the global refinements. "
+                        "size expression (sampled) and the fractures before gmsh runs (within "
+                        "a factor of 2 on the decks of prm/ and their refined variants), and "
+                        "counted before the global refinements. "
                         "Building a 3D mesh of 1.9 million cells takes 1.3 GB; solving on it "
                         "takes many times more. Raise it on machines with the memory.");
       prm.declare_entry(

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <porofrac/base/exceptions.h>
+#include <porofrac/geometry/fracture_band.h>
 #include <porofrac/geometry/gmsh_model.h>
 #include <porofrac/geometry/gmsh_session.h>
 #include <porofrac/geometry/polygon_mesher.h>
@@ -18,40 +19,6 @@ namespace porofrac
   {
     namespace
     {
-      /**
-       * The mesh size by the distance d to the nearest fracture: h_f + (h - h_f) min(1, d / D).
-       * Evaluated exactly on the polygons (gmsh's Distance field samples surfaces and comes out
-       * coarser than asked on the fractures); polygons whose bounding box is farther than D are
-       * skipped.
-       */
-      class FractureDistanceSize
-      {
-      public:
-        FractureDistanceSize(const PolygonNetwork &network, const GeometryParameters &prm)
-            : network(network)
-            , h_fracture(prm.fracture_mesh_size)
-            , h_far(prm.mesh_size)
-            , transition(prm.transition_distance > 0 ? prm.transition_distance : 5 * prm.mesh_size)
-        {
-        }
-
-        double
-        operator()(const Point<3> &x) const noexcept
-        {
-          double d = transition;
-          for (const auto &f : network.fractures)
-            if (f.polygon.box_distance(x) < d)
-              d = std::min(d, f.polygon.distance(x));
-          return std::min(h_far, h_fracture + (h_far - h_fracture) * d / transition);
-        }
-
-      private:
-        const PolygonNetwork &network;
-        const double          h_fracture, h_far, transition;
-      };
-
-
-
       /// One OpenCASCADE plane surface per fracture, in network order.
       gmsh::vectorpair
       add_polygons(const PolygonNetwork &network)
@@ -260,10 +227,13 @@ namespace porofrac
         add_physical_groups(network, pieces);
       });
 
-      const FractureDistanceSize size(network, prm);
+      // The fracture band evaluated exactly on the polygons: gmsh's Distance field samples
+      // surfaces and comes out coarser than asked on the fractures.
+      const FractureBand band(prm);
       session.run("Geometry", "gmsh could not set the mesh sizes", [&] {
-        gmsh::model::mesh::setSizeCallback(
-          [&size](int, int, double x, double y, double z) { return size(Point<3>(x, y, z)); });
+        gmsh::model::mesh::setSizeCallback([&](int, int, double x, double y, double z) {
+          return band.size(distance_to_fractures(network, Point<3>(x, y, z), band.transition));
+        });
         set_background_size(prm, 3, {});
         gmsh::option::setNumber("Mesh.Algorithm", prm.algorithm == "delaunay" ? 5 : 6);
         gmsh::option::setNumber("Mesh.Algorithm3D", 1); // Delaunay

@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
 #include <porofrac/base/exceptions.h>
+#include <porofrac/geometry/fracture_band.h>
 #include <porofrac/geometry/gmsh_model.h>
+#include <porofrac/geometry/planar_polygon.h>
 #include <porofrac/geometry/size_guard.h>
 #include <porofrac/io/expression.h>
 #include <porofrac/io/text.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <memory>
 #include <sstream>
 
 namespace porofrac
@@ -25,100 +31,211 @@ namespace porofrac
         return dim == 2 ? std::sqrt(3.) / 4 * h * h : h * h * h / (6 * std::sqrt(2.));
       }
 
-      /// Cells on both sides of a fracture of measure @p measure (length or area), in the band
-      /// of width D where the size grows linearly from h_f to h: 2 |f| int_0^D dd / v(h(d)).
+      /// Cells gmsh makes per regular cell of the asked size, measured on the decks of prm/
+      /// and their refined variants (contrib/cell-estimate-check, doc/geometry.md).
       double
-      fracture_band_cells(const double              measure,
-                          const GeometryParameters &prm,
-                          const unsigned int        dim)
+      gmsh_cells_per_regular_cell(const unsigned int dim)
       {
-        const double h_f = prm.fracture_mesh_size, h = std::max(prm.mesh_size, h_f);
-        const double D = prm.transition_distance > 0 ? prm.transition_distance : 5 * prm.mesh_size;
-        const double per_measure = dim == 2 ?
-                                     D / (h_f * h) / cell_measure(1., 2) :
-                                     D * (h + h_f) / (2 * h_f * h_f * h * h) / cell_measure(1., 3);
-        return 2 * measure * per_measure;
+        return dim == 2 ? 1.15 : 0.65;
       }
 
-      /// The domain for sampling: its bounding box and a test for points inside it.
-      struct SampledDomain
+      /// The size parameters, in the order of RequestedSize::Part.
+      const std::array<const char *, 4> part_names{{"Geometry/Mesh size",
+                                                    "Geometry/Fracture mesh size",
+                                                    "Geometry/Refinement regions",
+                                                    "Geometry/Mesh size expression"}};
+
+      /**
+       * The size gmsh is asked for at a point: the smallest of Mesh size, the fracture band,
+       * the refinement boxes that hold the point and the Mesh size expression (gmsh's Min
+       * field, gmsh_model.cc and the 3D size callback).
+       */
+      class RequestedSize
       {
-        dealii::Point<3>                              lo, hi;
-        std::function<bool(const dealii::Point<3> &)> inside;
+      public:
+        enum Part
+        {
+          mesh_size,
+          fracture_band,
+          region,
+          expression
+        };
+
+        using Distance = std::function<double(const Point<3> &, double)>;
+
+        RequestedSize(const GeometryParameters &prm, const unsigned int dim, Distance distance)
+            : prm(prm)
+            , dim(dim)
+            , band(prm)
+            , regions(parse_refinement_regions(prm.refinement_regions, dim))
+            , distance(std::move(distance))
+        {
+          // An expression that muparser cannot read is left to gmsh (the dialects differ).
+          if (!prm.size_expression.empty())
+            try
+              {
+                function =
+                  io::parse_expressions<3>({prm.size_expression}, "Geometry/Mesh size expression");
+              }
+            catch (const InputError &)
+              {
+              }
+        }
+
+        /// The size at @p x and the part that sets it. An expression that is not finite and
+        /// positive is refused here: gmsh would either fail or mesh without end.
+        std::pair<double, Part>
+        at(const Point<3> &x) const
+        {
+          std::pair<double, Part> h{prm.mesh_size, mesh_size};
+          const double            d = distance(x, band.transition);
+          if (d < band.transition && band.size(d) < h.first)
+            h = {band.size(d), fracture_band};
+          for (const auto &r : regions)
+            if (r.h < h.first && inside(x, r.lo, r.hi))
+              h = {r.h, region};
+          if (function)
+            {
+              const double e = function->value(x);
+              if (!(e > 0))
+                throw InputError("Geometry/Mesh size expression",
+                                 "'" + prm.size_expression +
+                                   "' is not a valid positive size field: it is " + io::to_text(e) +
+                                   " at " + io::to_text(x));
+              if (e < h.first)
+                h = {e, expression};
+            }
+          return h;
+        }
+
+        /// A lower bound of the size over the box [lo, hi] from the parts known in closed form
+        /// (the expression is only sampled).
+        double
+        lower_bound(const Point<3> &lo, const Point<3> &hi) const
+        {
+          const Point<3> centre = 0.5 * (lo + hi);
+          const double   radius = 0.5 * lo.distance(hi);
+          double         h =
+            std::min(prm.mesh_size,
+                     band.size(std::max(0., distance(centre, band.transition + radius) - radius)));
+          for (const auto &r : regions)
+            if (r.h < h && overlaps(lo, hi, r.lo, r.hi))
+              h = r.h;
+          return h;
+        }
+
+      private:
+        bool
+        inside(const Point<3> &x, const Point<3> &lo, const Point<3> &hi) const
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            if (x[d] < lo[d] || x[d] > hi[d])
+              return false;
+          return true;
+        }
+
+        bool
+        overlaps(const Point<3> &a_lo,
+                 const Point<3> &a_hi,
+                 const Point<3> &b_lo,
+                 const Point<3> &b_hi) const
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            if (a_hi[d] < b_lo[d] || b_hi[d] < a_lo[d])
+              return false;
+          return true;
+        }
+
+        const GeometryParameters                  &prm;
+        const unsigned int                         dim;
+        const FractureBand                         band;
+        const std::vector<RefinementRegion>        regions;
+        const Distance                             distance;
+        std::unique_ptr<dealii::FunctionParser<3>> function;
       };
 
-      /// Cells of the bulk at Mesh size or, where the Mesh size expression is smaller, at the
-      /// expression: the domain measure times the mean of 1 / v(min(h, h_e)) over a regular
-      /// grid of points inside the domain. An expression that muparser cannot read is left
-      /// to gmsh (the two dialects differ); one that is not finite and positive at a sample
-      /// point is refused here, since gmsh would either fail or mesh without end.
-      double
-      bulk_cells(const double              domain_measure,
-                 const double              plain,
-                 const SampledDomain      &domain,
-                 const GeometryParameters &prm,
-                 const unsigned int        dim)
+      /// The domain: its bounding box and a test for points inside it.
+      struct SampledDomain
       {
-        if (prm.size_expression.empty())
-          return plain;
-        std::unique_ptr<dealii::FunctionParser<3>> h_e;
-        try
-          {
-            h_e = io::parse_expressions<3>({prm.size_expression}, "Geometry/Mesh size expression");
-          }
-        catch (const InputError &)
-          {
-            return plain;
-          }
-        const unsigned int n       = dim == 2 ? 64 : 24;
-        const unsigned int samples = dim == 2 ? (n + 1) * (n + 1) : (n + 1) * (n + 1) * (n + 1);
-        double             sum     = 0;
-        unsigned int       count   = 0;
-        for (unsigned int i = 0; i < samples; ++i)
-          {
-            dealii::Point<3> p;
-            for (unsigned int d = 0, k = i; d < dim; ++d, k /= n + 1)
-              p[d] = domain.lo[d] + (domain.hi[d] - domain.lo[d]) * (k % (n + 1)) / n;
-            if (!domain.inside(p))
-              continue;
-            const double h = h_e->value(p);
-            if (!(h > 0))
-              throw InputError("Geometry/Mesh size expression",
-                               "'" + prm.size_expression +
-                                 "' is not a valid positive size "
-                                 "field: it is " +
-                                 io::to_text(h) + " at " + io::to_text(p));
-            sum += 1 / cell_measure(std::min(h, prm.mesh_size), dim);
-            ++count;
-          }
-        return count == 0 ? plain : std::max(plain, domain_measure * sum / count);
-      }
+        Point<3>                              lo, hi;
+        std::function<bool(const Point<3> &)> inside;
+      };
 
-      /// The sum of the three parts, blamed on the parameter of the largest.
-      CellEstimate
-      total(const double              domain_measure,
-            const SampledDomain      &domain,
-            const double              fracture_measure,
-            const GeometryParameters &prm,
-            const unsigned int        dim)
+      struct Box
       {
-        const double plain  = domain_measure / cell_measure(prm.mesh_size, dim);
-        const double bulk   = bulk_cells(domain_measure, plain, domain, prm, dim);
-        double       region = 0;
-        for (const auto &r : parse_refinement_regions(prm.refinement_regions, dim))
+        Point<3> lo, hi;
+      };
+
+      /**
+       * Integrates 1 / v(h(x)) over the domain, v the measure of a regular cell of edge h,
+       * on boxes split in 2^dim until h varies by less than 3/2 over a box or the box is
+       * smaller than the cells in it (and at least min_depth times), h sampled at the box's
+       * corners and centre (points outside the domain count as no cells). Splitting stops
+       * after `budget` boxes.
+       */
+      CellEstimate
+      integrate(const RequestedSize &size, const SampledDomain &domain, const unsigned int dim)
+      {
+        const unsigned int min_depth = dim == 2 ? 5 : 3, budget = dim == 2 ? 40000 : 60000;
+        const unsigned int n_corners = 1u << dim, n_samples = n_corners + 1;
+        // Simpson's weights along a direction in which h varies: 1/3 the corners' mean, 2/3
+        // the centre (the corners alone overestimate a convex density, the centre underestimates).
+        const double          weight_corner = 1. / (3 * n_corners), weight_centre = 2. / 3;
+        std::array<double, 4> cells{};
+        std::vector<Box>      level{{domain.lo, domain.hi}};
+        unsigned int          evaluated = 0;
+        for (unsigned int depth = 0; !level.empty(); ++depth)
           {
-            double box = 1;
-            for (unsigned int d = 0; d < dim; ++d)
-              box *= r.hi[d] - r.lo[d];
-            region += std::min(box, domain_measure) / cell_measure(r.h, dim);
+            std::vector<Box> next;
+            for (const Box &b : level)
+              {
+                ++evaluated;
+                std::array<double, 4> box_cells{};
+                double                h_min = std::numeric_limits<double>::infinity(), h_max = 0;
+                unsigned int          n_inside = 0;
+                for (unsigned int k = 0; k < n_samples; ++k)
+                  {
+                    Point<3> p = 0.5 * (b.lo + b.hi);
+                    if (k < n_corners)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        p[d] = (k >> d) & 1 ? b.hi[d] : b.lo[d];
+                    if (!domain.inside(p))
+                      continue;
+                    ++n_inside;
+                    const auto [h, part] = size.at(p);
+                    h_min                = std::min(h_min, h);
+                    h_max                = std::max(h_max, h);
+                    box_cells[part] +=
+                      (k < n_corners ? weight_corner : weight_centre) / cell_measure(h, dim);
+                  }
+                double extent = 0, measure = 1;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    extent = std::max(extent, b.hi[d] - b.lo[d]);
+                    measure *= b.hi[d] - b.lo[d];
+                  }
+                const double h_low = std::min(h_min, size.lower_bound(b.lo, b.hi));
+                const bool   split =
+                  depth < min_depth || (extent > h_low && (h_max > 1.5 * h_low ||
+                                                           (n_inside > 0 && n_inside < n_samples)));
+                if (split && evaluated + next.size() + n_corners <= budget)
+                  for (unsigned int k = 0; k < n_corners; ++k)
+                    {
+                      Box            child = b;
+                      const Point<3> mid   = 0.5 * (b.lo + b.hi);
+                      for (unsigned int d = 0; d < dim; ++d)
+                        ((k >> d) & 1 ? child.lo[d] : child.hi[d]) = mid[d];
+                      next.push_back(child);
+                    }
+                else
+                  for (unsigned int part = 0; part < cells.size(); ++part)
+                    cells[part] += measure * box_cells[part];
+              }
+            level.swap(next);
           }
-        const double fracture = fracture_band_cells(fracture_measure, prm, dim);
-        const double largest  = std::max({bulk, region, fracture});
-        return {bulk + region + fracture,
-                largest == bulk ?
-                  (bulk > 1.01 * plain ? "Geometry/Mesh size expression" : "Geometry/Mesh size") :
-                largest == fracture ? "Geometry/Fracture mesh size" :
-                                      "Geometry/Refinement regions"};
+        const unsigned int largest = std::max_element(cells.begin(), cells.end()) - cells.begin();
+        return {gmsh_cells_per_regular_cell(dim) * (cells[0] + cells[1] + cells[2] + cells[3]),
+                part_names[largest]};
       }
     } // namespace
 
@@ -127,32 +244,33 @@ namespace porofrac
     CellEstimate
     estimate_cells(const FractureNetwork &network, const GeometryParameters &prm)
     {
-      const auto &c    = network.domain.corners;
-      double      area = 0;
-      for (unsigned int i = 0; i < c.size(); ++i)
-        area += (c[i][0] * c[(i + 1) % c.size()][1] - c[(i + 1) % c.size()][0] * c[i][1]) / 2;
-      double length = 0;
-      for (const auto &f : network.fractures)
-        for (unsigned int i = 0; i + 1 < f.points.size(); ++i)
-          length += f.points[i].distance(f.points[i + 1]);
-      SampledDomain domain{
-        {c[0][0], c[0][1], 0}, {c[0][0], c[0][1], 0}, [&c](const dealii::Point<3> &p) {
-          // Even-odd rule: a ray in +x crosses the boundary an odd number
-          // of times from a point inside.
-          bool inside = false;
-          for (unsigned int i = 0, j = c.size() - 1; i < c.size(); j = i++)
-            if ((c[i][1] > p[1]) != (c[j][1] > p[1]) &&
-                p[0] < c[j][0] + (c[i][0] - c[j][0]) * (p[1] - c[j][1]) / (c[i][1] - c[j][1]))
-              inside = !inside;
-          return inside;
-        }};
+      const auto   &c = network.domain.corners;
+      SampledDomain domain{{c[0][0], c[0][1], 0}, {c[0][0], c[0][1], 0}, [&c](const Point<3> &p) {
+                             // Even-odd rule: a ray in +x crosses the boundary an odd number
+                             // of times from a point inside (points on it count as inside).
+                             bool inside = false;
+                             for (unsigned int i = 0, j = c.size() - 1; i < c.size(); j = i++)
+                               {
+                                 if (distance_to_segment<2>(Point<2>(p[0], p[1]), c[i], c[j]) <
+                                     1e-12 * (std::abs(p[0]) + std::abs(p[1]) + 1))
+                                   return true;
+                                 if ((c[i][1] > p[1]) != (c[j][1] > p[1]) &&
+                                     p[0] < c[j][0] + (c[i][0] - c[j][0]) * (p[1] - c[j][1]) /
+                                                        (c[i][1] - c[j][1]))
+                                   inside = !inside;
+                               }
+                             return inside;
+                           }};
       for (const auto &corner : c)
         for (unsigned int d = 0; d < 2; ++d)
           {
             domain.lo[d] = std::min(domain.lo[d], corner[d]);
             domain.hi[d] = std::max(domain.hi[d], corner[d]);
           }
-      return total(area, domain, length, prm, 2);
+      const RequestedSize size(prm, 2, [&network](const Point<3> &x, const double cap) {
+        return distance_to_fractures(network, x, cap);
+      });
+      return integrate(size, domain, 2);
     }
 
 
@@ -160,16 +278,11 @@ namespace porofrac
     CellEstimate
     estimate_cells(const PolygonNetwork &network, const GeometryParameters &prm)
     {
-      double volume = 1;
-      for (unsigned int d = 0; d < 3; ++d)
-        volume *= network.hi[d] - network.lo[d];
-      double area = 0;
-      for (const auto &f : network.fractures)
-        area += f.polygon.area();
-      const SampledDomain box{network.lo, network.hi, [](const dealii::Point<3> &) {
-                                return true;
-                              }};
-      return total(volume, box, area, prm, 3);
+      const SampledDomain box{network.lo, network.hi, [](const Point<3> &) { return true; }};
+      const RequestedSize size(prm, 3, [&network](const Point<3> &x, const double cap) {
+        return distance_to_fractures(network, x, cap);
+      });
+      return integrate(size, box, 3);
     }
 
 

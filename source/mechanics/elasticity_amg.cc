@@ -3,7 +3,6 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <porofrac/base/available_memory.h>
-#include <porofrac/base/mpi_tools.h>
 #include <porofrac/mechanics/elasticity_amg.h>
 
 #include <map>

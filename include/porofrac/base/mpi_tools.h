@@ -2,10 +2,12 @@
 #ifndef POROFRAC_BASE_MPI_TOOLS_H
 #define POROFRAC_BASE_MPI_TOOLS_H
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 
 #include <porofrac/base/exceptions.h>
 
+#include <array>
 #include <cmath>
 #include <new>
 #include <stdexcept>
@@ -98,18 +100,29 @@ namespace porofrac
       }
   }
 
-  /// The sum of @p value over the processes of @p communicator on this machine, which share its
-  /// memory (collective).
+  /// The sums of @p values over the processes of @p communicator on this machine, which share
+  /// its memory (collective; one split of the communicator and one reduction).
+  template <std::size_t n>
+  std::array<double, n>
+  sum_on_this_machine(const std::array<double, n> &values, const MPI_Comm communicator)
+  {
+    if (communicator == MPI_COMM_SELF)
+      return values;
+    MPI_Comm machine;
+    MPI_Comm_split_type(communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
+    std::array<double, n> sums;
+    dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(values.data(), n),
+                                machine,
+                                dealii::ArrayView<double>(sums.data(), n));
+    MPI_Comm_free(&machine);
+    return sums;
+  }
+
+  /// The sum of @p value over the processes of @p communicator on this machine (collective).
   inline double
   sum_on_this_machine(const double value, const MPI_Comm communicator)
   {
-    if (communicator == MPI_COMM_SELF)
-      return value;
-    MPI_Comm machine;
-    MPI_Comm_split_type(communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
-    const double sum = dealii::Utilities::MPI::sum(value, machine);
-    MPI_Comm_free(&machine);
-    return sum;
+    return sum_on_this_machine<1>({{value}}, communicator)[0];
   }
 
   /// The number of processes of @p communicator on this machine (collective).
