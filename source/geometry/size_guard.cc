@@ -166,21 +166,58 @@ namespace porofrac
         Point<3> lo, hi;
       };
 
+      /// What the samples of one box say: its cells per unit measure by the part that sets the
+      /// size, the extremes of the size, and how many samples are inside the domain.
+      struct BoxSamples
+      {
+        std::array<double, 4> density{};
+        double                h_min = std::numeric_limits<double>::infinity(), h_max = 0;
+        unsigned int          n_inside = 0;
+      };
+
+      /**
+       * Samples the size at the corners and the centre of @p box, with Simpson's weights along
+       * a direction in which h varies: 1/3 the corners' mean, 2/3 the centre (the corners alone
+       * overestimate a convex density, the centre underestimates). Points outside the domain
+       * count as no cells.
+       */
+      BoxSamples
+      sample(const Box           &box,
+             const RequestedSize &size,
+             const SampledDomain &domain,
+             const unsigned int   dim)
+      {
+        const unsigned int n_corners = 1u << dim;
+        BoxSamples         result;
+        for (unsigned int k = 0; k <= n_corners; ++k)
+          {
+            Point<3> p = 0.5 * (box.lo + box.hi);
+            if (k < n_corners)
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = (k >> d) & 1 ? box.hi[d] : box.lo[d];
+            if (!domain.inside(p))
+              continue;
+            ++result.n_inside;
+            const auto [h, part] = size.at(p);
+            result.h_min         = std::min(result.h_min, h);
+            result.h_max         = std::max(result.h_max, h);
+            result.density[part] +=
+              (k < n_corners ? 1. / (3 * n_corners) : 2. / 3) / cell_measure(h, dim);
+          }
+        return result;
+      }
+
       /**
        * Integrates 1 / v(h(x)) over the domain, v the measure of a regular cell of edge h,
        * on boxes split in 2^dim until h varies by less than 3/2 over a box or the box is
-       * smaller than the cells in it (and at least min_depth times), h sampled at the box's
-       * corners and centre (points outside the domain count as no cells). Splitting stops
-       * after `budget` boxes.
+       * smaller than the cells in it, or its samples are all inside or all outside the domain
+       * (and at least min_depth times). Splitting stops after `budget` boxes.
        */
       CellEstimate
       integrate(const RequestedSize &size, const SampledDomain &domain, const unsigned int dim)
       {
-        const unsigned int min_depth = dim == 2 ? 5 : 3, budget = dim == 2 ? 40000 : 60000;
-        const unsigned int n_corners = 1u << dim, n_samples = n_corners + 1;
-        // Simpson's weights along a direction in which h varies: 1/3 the corners' mean, 2/3
-        // the centre (the corners alone overestimate a convex density, the centre underestimates).
-        const double          weight_corner = 1. / (3 * n_corners), weight_centre = 2. / 3;
+        const unsigned int    min_depth = dim == 2 ? 5 : 3, budget = dim == 2 ? 40000 : 60000;
+        const unsigned int    n_children = 1u << dim;
         std::array<double, 4> cells{};
         std::vector<Box>      level{{domain.lo, domain.hi}};
         unsigned int          evaluated = 0;
@@ -190,36 +227,19 @@ namespace porofrac
             for (const Box &b : level)
               {
                 ++evaluated;
-                std::array<double, 4> box_cells{};
-                double                h_min = std::numeric_limits<double>::infinity(), h_max = 0;
-                unsigned int          n_inside = 0;
-                for (unsigned int k = 0; k < n_samples; ++k)
-                  {
-                    Point<3> p = 0.5 * (b.lo + b.hi);
-                    if (k < n_corners)
-                      for (unsigned int d = 0; d < dim; ++d)
-                        p[d] = (k >> d) & 1 ? b.hi[d] : b.lo[d];
-                    if (!domain.inside(p))
-                      continue;
-                    ++n_inside;
-                    const auto [h, part] = size.at(p);
-                    h_min                = std::min(h_min, h);
-                    h_max                = std::max(h_max, h);
-                    box_cells[part] +=
-                      (k < n_corners ? weight_corner : weight_centre) / cell_measure(h, dim);
-                  }
-                double extent = 0, measure = 1;
+                const BoxSamples samples = sample(b, size, domain, dim);
+                double           extent = 0, measure = 1;
                 for (unsigned int d = 0; d < dim; ++d)
                   {
                     extent = std::max(extent, b.hi[d] - b.lo[d]);
                     measure *= b.hi[d] - b.lo[d];
                   }
-                const double h_low = std::min(h_min, size.lower_bound(b.lo, b.hi));
+                const double h_low   = std::min(samples.h_min, size.lower_bound(b.lo, b.hi));
+                const bool   partial = samples.n_inside > 0 && samples.n_inside <= n_children;
                 const bool   split =
-                  depth < min_depth || (extent > h_low && (h_max > 1.5 * h_low ||
-                                                           (n_inside > 0 && n_inside < n_samples)));
-                if (split && evaluated + next.size() + n_corners <= budget)
-                  for (unsigned int k = 0; k < n_corners; ++k)
+                  depth < min_depth || (extent > h_low && (samples.h_max > 1.5 * h_low || partial));
+                if (split && evaluated + next.size() + n_children <= budget)
+                  for (unsigned int k = 0; k < n_children; ++k)
                     {
                       Box            child = b;
                       const Point<3> mid   = 0.5 * (b.lo + b.hi);
@@ -229,7 +249,7 @@ namespace porofrac
                     }
                 else
                   for (unsigned int part = 0; part < cells.size(); ++part)
-                    cells[part] += measure * box_cells[part];
+                    cells[part] += measure * samples.density[part];
               }
             level.swap(next);
           }
