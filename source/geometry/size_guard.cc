@@ -32,7 +32,7 @@ namespace porofrac
       }
 
       /// Cells gmsh makes per regular cell of the asked size, measured on the decks of prm/
-      /// and their refined variants (contrib/cell-estimate-check, doc/geometry.md).
+      /// and their refined variants (contrib/cell-estimate-check, doc/benchmarks/geometry_3d.md).
       double
       gmsh_cells_per_regular_cell(const unsigned int dim)
       {

@@ -27,8 +27,8 @@ namespace porofrac
      * per such cell (measured). The integral is taken on boxes split where h varies, h sampled
      * at their corners and centres, so a size expression with features finer than those boxes
      * may be missed. Within a factor of 2 on the decks of prm/ and their refined variants,
-     * except meshes of a few hundred cells. Throws an InputError if the Mesh size expression is
-     * not positive and finite at a sample point inside the domain.
+     * except meshes of about a thousand cells and fewer (underestimated). Throws an InputError if
+     * the Mesh size expression is not positive and finite at a sample point inside the domain.
      */
     CellEstimate
     estimate_cells(const FractureNetwork &network, const GeometryParameters &parameters);
